@@ -1,0 +1,14 @@
+// The subcommands of the clm3d command line. Each adds itself to the root app with its options
+// and a callback that does the work through core; errors propagate as clm3d::Error.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace clm3d::cli {
+
+void addRenderCommand(CLI::App& root);
+void addSynthHeadCommand(CLI::App& root);
+void addLandmarksCommand(CLI::App& root);
+void addDemoCommand(CLI::App& root);
+
+}  // namespace clm3d::cli

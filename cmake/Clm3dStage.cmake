@@ -1,0 +1,12 @@
+# A core stage is one folder of core/ built as one static library named clm3d_<stage>.
+# Sources are the folder's own .cpp files (not subfolders), so adding a file needs no CMake edit.
+function(clm3d_add_stage stage)
+  cmake_parse_arguments(ARG "" "" "PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  set(target clm3d_${stage})
+  add_library(${target} STATIC ${sources})
+  add_library(clm3d::${stage} ALIAS ${target})
+  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  clm3d_set_warnings(${target})
+endfunction()
