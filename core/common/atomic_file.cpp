@@ -51,7 +51,8 @@ void writeTextAtomically(const std::filesystem::path& path, std::string_view tex
 
 void writeBytesAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
   writeFileAtomically(path, [&](std::ostream& out) {
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
   });
 }
 

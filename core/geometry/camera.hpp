@@ -1,7 +1,8 @@
 // The pinhole camera of the thesis's appendix A.1.2: a symmetric OpenGL perspective frustum
 // (eq. A.10-A.12) plus the viewport that maps normalised device coordinates to pixels.
 // Pixel convention (as OpenCV): x right, y down, integer coordinates at pixel centres, so pixel
-// (0, 0) covers [-0.5, 0.5)^2. On disk, .pts files add 1 (iBUG convention); in memory it is 0-based.
+// (0, 0) covers [-0.5, 0.5)^2. On disk, .pts files add 1 (iBUG convention); in memory it is
+// 0-based.
 #pragma once
 
 #include <Eigen/Core>

@@ -32,7 +32,9 @@ std::filesystem::path fixturePath(const std::string& relative) {
   return std::filesystem::path(CLM3D_TEST_FIXTURES) / relative;
 }
 
-std::filesystem::path binaryDir() { return CLM3D_BINARY_DIR; }
+std::filesystem::path binaryDir() {
+  return CLM3D_BINARY_DIR;
+}
 
 std::string readFile(const std::filesystem::path& path) {
   std::ifstream stream(path, std::ios::binary);

@@ -40,11 +40,11 @@ CommandResult runClm3d(const std::string& arguments);
 }  // namespace clm3d::test
 
 // Declares `dataDir` (a std::filesystem::path to ../shared/data) or skips the test with a message.
-#define CLM3D_REQUIRE_SHARED_DATA(dataDir)                                               \
-  const auto dataDir##_optional = ::clm3d::sharedDataDir();                             \
-  if (!dataDir##_optional) {                                                            \
-    GTEST_SKIP() << "../shared/data not found (set CLM3D_DATA to run this test)";       \
-  }                                                                                     \
+#define CLM3D_REQUIRE_SHARED_DATA(dataDir)                                        \
+  const auto dataDir##_optional = ::clm3d::sharedDataDir();                       \
+  if (!dataDir##_optional) {                                                      \
+    GTEST_SKIP() << "../shared/data not found (set CLM3D_DATA to run this test)"; \
+  }                                                                               \
   const std::filesystem::path dataDir = *dataDir##_optional
 
 #include "core/common/data_paths.hpp"

@@ -1,0 +1,10 @@
+# Debian package of the clm3d command line, its render module and resources (cpack -G DEB).
+set(CPACK_PACKAGE_NAME "clm3d")
+set(CPACK_PACKAGE_VENDOR "clm3d developers")
+set(CPACK_PACKAGE_CONTACT "clm3d developers <clm3d@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
+set(CPACK_GENERATOR "DEB")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_SECTION "science")
+include(CPack)
