@@ -1,0 +1,30 @@
+// Reading and writing landmark files by extension: .pts (iBUG), .ljson / .json (menpo LJSON) and
+// .csv, with the conventions of each format (pts_format.hpp, ljson_format.hpp, csv_format.hpp)
+// so that callers only ever see 0-based (x, y[, z]) points in scheme order.
+#pragma once
+
+#include <filesystem>
+
+#include "core/scheme/landmark_set.hpp"
+#include "core/scheme/scheme.hpp"
+
+namespace clm3d {
+
+enum class LandmarkFormat { Pts, Ljson, Csv };
+
+// By extension (case-insensitive); throws InputError naming the file for any other extension.
+LandmarkFormat landmarkFormatOf(const std::filesystem::path& path);
+
+// Reads a landmark file. With `expected`, the points come back in its order (LJSON layouts and CSV
+// ids are applied) and must number expected->size(), else InputError "FILE: has 68 points, scheme
+// thesis25 expects 25" - except that a 68-point file read for a scheme named thesis25 is converted
+// with ibug68ToThesis25 (some thesis points are then missing, see docs/landmarks.md).
+// Without `expected`, LJSON layouts and CSV ids of the built-in scheme of the same size apply.
+LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expected = nullptr);
+
+// Writes atomically in the format of the extension; ids and labels come from the scheme, whose
+// size must match (InputError otherwise).
+void writeLandmarks(const std::filesystem::path& path, const LandmarkSet& points,
+                    const Scheme& scheme);
+
+}  // namespace clm3d
