@@ -1,0 +1,326 @@
+// clm3d render: draws a textured mesh offscreen at a given head pose, framed automatically, and
+// writes the image (transparent background), optionally the projected landmarks, the depth map
+// and an overlay of the landmarks. All work is done by core (mesh, render, scheme, geometry).
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/commands/commands.hpp"
+#include "core/common/atomic_file.hpp"
+#include "core/common/error.hpp"
+#include "core/geometry/projection.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/render/offscreen_renderer.hpp"
+#include "core/scheme/ibug68_conversion.hpp"
+#include "core/scheme/landmark_file.hpp"
+
+namespace clm3d::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArgs {
+  fs::path mesh;
+  fs::path landmarks;
+  double yaw = 0.0;
+  double pitch = 0.0;
+  double roll = 0.0;
+  int size = 256;
+  double fov = 30.0;
+  std::vector<double> lightDir{0.3, 0.4, 1.0};
+  double ambient = Lighting{}.ambient;
+  double diffuse = Lighting{}.diffuse;
+  double fill = 0.85;
+  int supersample = 2;
+  std::string up = "+y";
+  std::string front = "+z";
+  bool allowUntextured = false;
+  bool hiddenMissing = false;
+  fs::path out;
+  fs::path outLandmarks;
+  fs::path outDepth;
+  fs::path overlay;
+};
+
+// "+y", "-z", "x" -> unit vector in the file's coordinates.
+Eigen::Vector3d parseAxis(const std::string& text, const std::string& option) {
+  std::string s = text;
+  double sign = 1.0;
+  if (!s.empty() && (s[0] == '+' || s[0] == '-')) {
+    sign = s[0] == '-' ? -1.0 : 1.0;
+    s = s.substr(1);
+  }
+  if (s == "x" || s == "X") return sign * Eigen::Vector3d::UnitX();
+  if (s == "y" || s == "Y") return sign * Eigen::Vector3d::UnitY();
+  if (s == "z" || s == "Z") return sign * Eigen::Vector3d::UnitZ();
+  throw CLI::ValidationError(option, "expected an axis such as +y, -z or x, got '" + text + "'");
+}
+
+// Rotation taking the file's axes to the model convention (+y up, +z out of the face).
+Eigen::Matrix3d alignment(const RenderArgs& args) {
+  const Eigen::Vector3d up = parseAxis(args.up, "--up");
+  const Eigen::Vector3d front = parseAxis(args.front, "--front");
+  if (std::abs(up.dot(front)) > 0.5) {
+    throw CLI::ValidationError("--up/--front", "the up and front axes must differ");
+  }
+  Eigen::Matrix3d fileFromModel;
+  fileFromModel.col(0) = up.cross(front);
+  fileFromModel.col(1) = up;
+  fileFromModel.col(2) = front;
+  return fileFromModel.transpose();
+}
+
+struct Landmarks {
+  LandmarkSet points;
+  const Scheme* scheme = nullptr;
+  std::optional<Eigen::Vector3d> landmarkOne;  // thesis landmark 1, between the eyes
+};
+
+Landmarks readModelLandmarks(const fs::path& path) {
+  Landmarks result;
+  result.points = readLandmarks(path);
+  if (result.points.dims() != 3) throwInputError(path, "expected 3D landmarks (x, y, z)");
+  if (result.points.size() == Scheme::thesis25().size()) {
+    result.scheme = &Scheme::thesis25();
+    if (result.points.has(0)) result.landmarkOne = result.points.point(0);
+  } else if (result.points.size() == Scheme::ibug68().size()) {
+    result.scheme = &Scheme::ibug68();
+    const LandmarkSet thesis = ibug68ToThesis25(result.points);
+    if (thesis.has(0)) result.landmarkOne = thesis.point(0);
+  } else {
+    throwInputError(path, "has " + std::to_string(result.points.size()) +
+                              " points; expected 25 (thesis25) or 68 (ibug68)");
+  }
+  return result;
+}
+
+// Chooses the translation that centres the mesh's projection and makes its larger side span
+// `fill` of the image (a few fixed-point steps; perspective makes it slightly non-linear).
+Eigen::Vector3d frameMesh(const TexturedMesh& mesh, const Pose& rotation, const Camera& camera,
+                          double fill) {
+  const std::size_t stride = std::max<std::size_t>(1, mesh.vertexCount() / 20000);
+  double radius = 0.0;
+  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  if (!(radius > 0.0)) throw Error("render: the mesh has no extent");
+  Eigen::Vector3d translation(0.0, 0.0, distanceToFit(radius, camera, fill) - radius);
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    Pose pose = rotation;
+    pose.translation = translation;
+    Eigen::AlignedBox2d box;
+    for (std::size_t i = 0; i < mesh.vertexCount(); i += stride) {
+      box.extend(projectPoint(mesh.positions[i].cast<double>(), pose, camera));
+    }
+    const Eigen::Vector2d centre(0.5 * (camera.width - 1), 0.5 * (camera.height - 1));
+    const Eigen::Vector2d offset = box.center() - centre;
+    const double span = std::max(box.sizes().x() / camera.width, box.sizes().y() / camera.height);
+    const double depth = -translation.z();
+    translation.x() -= offset.x() * depth / camera.focalX();
+    translation.y() += offset.y() * depth / camera.focalY();
+    // Move so the span becomes `fill`; nearer points grow faster, hence the iteration.
+    translation.z() = -(depth * span / fill);
+    if (std::abs(span - fill) < 1e-3 && offset.norm() < 0.25) break;
+  }
+  return translation;
+}
+
+void writeImage(const fs::path& path, const cv::Mat& image) {
+  std::vector<unsigned char> bytes;
+  std::string extension = path.extension().string();
+  if (extension.empty()) throwInputError(path, "needs an image extension such as .png");
+  bool encoded = false;
+  try {
+    encoded = cv::imencode(extension, image, bytes);
+  } catch (const cv::Exception&) {
+    encoded = false;
+  }
+  if (!encoded) throwInputError(path, "cannot encode an image of this type ('" + extension + "')");
+  writeBytesAtomically(path, bytes);
+}
+
+cv::Mat drawOverlay(const RenderResult& render, const LandmarkSet& projected,
+                    const std::vector<bool>& visible, const Scheme& scheme) {
+  cv::Mat overlay = render.bgra.clone();
+  const int size = std::min(overlay.cols, overlay.rows);
+  const int radius = std::max(2, size / 120);
+  const double fontScale = std::max(0.3, size / 900.0);
+  const int shift = 4;  // sub-pixel drawing
+  for (int i = 0; i < projected.size(); ++i) {
+    if (!projected.has(i)) continue;
+    const Eigen::Vector3d p = projected.point(i);
+    const int region = scheme.regionOf(i);
+    cv::Scalar colour(0, 255, 255, 255);
+    if (region >= 0) {
+      const RgbColour c = scheme.regions()[static_cast<std::size_t>(region)].colour;
+      colour = cv::Scalar(c.b, c.g, c.r, 255);
+    }
+    const cv::Point centre(static_cast<int>(std::lround(p.x() * (1 << shift))),
+                           static_cast<int>(std::lround(p.y() * (1 << shift))));
+    const bool shown = visible[static_cast<std::size_t>(i)];
+    cv::circle(overlay, centre, radius << shift, cv::Scalar(0, 0, 0, 255), shown ? cv::FILLED : 3,
+               cv::LINE_AA, shift);
+    cv::circle(overlay, centre, (radius - 1) << shift, colour, shown ? cv::FILLED : 1, cv::LINE_AA,
+               shift);
+    const cv::Point label(static_cast<int>(p.x()) + radius + 1, static_cast<int>(p.y()) - radius);
+    const std::string text = std::to_string(i + 1);  // thesis / .pts numbering, 1-based
+    cv::putText(overlay, text, label, cv::FONT_HERSHEY_SIMPLEX, fontScale, cv::Scalar(0, 0, 0, 255),
+                3, cv::LINE_AA);
+    cv::putText(overlay, text, label, cv::FONT_HERSHEY_SIMPLEX, fontScale, colour, 1, cv::LINE_AA);
+  }
+  return overlay;
+}
+
+void runRender(const RenderArgs& args) {
+  MeshLoadOptions loadOptions;
+  loadOptions.requireTexture = !args.allowUntextured;
+  TexturedMesh mesh = loadTexturedMesh(args.mesh, loadOptions);
+
+  // To the model convention: +y up, +z out of the face.
+  const Eigen::Matrix3d align = alignment(args);
+  if (!align.isIdentity()) {
+    const Eigen::Matrix3f a = align.cast<float>();
+    for (auto& p : mesh.positions) p = a * p;
+    for (auto& n : mesh.normals) n = a * n;
+  }
+
+  std::optional<Landmarks> landmarks;
+  if (!args.landmarks.empty()) {
+    landmarks = readModelLandmarks(args.landmarks);
+    for (int i = 0; i < landmarks->points.size(); ++i) {
+      if (landmarks->points.has(i))
+        landmarks->points.set(i, Eigen::Vector3d(align * landmarks->points.point(i)));
+    }
+    if (landmarks->landmarkOne) landmarks->landmarkOne = align * *landmarks->landmarkOne;
+  }
+
+  // The centre of rotation: landmark 1 when known, else the centre of the bounding box.
+  const Eigen::Vector3d centre = landmarks && landmarks->landmarkOne
+                                     ? *landmarks->landmarkOne
+                                     : Eigen::Vector3d(mesh.bounds().center().cast<double>());
+  mesh.translate(-centre.cast<float>());
+
+  Camera camera = Camera::fromVerticalFov(args.size, args.size, args.fov);
+  Pose pose = Pose::fromDegrees(args.pitch, args.yaw, args.roll);
+  pose.translation = frameMesh(mesh, pose, camera, args.fill);
+  double radius = 0.0;
+  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  camera = Camera::fromVerticalFov(args.size, args.size, args.fov,
+                                   std::max(0.1, 0.5 * (-pose.translation.z() - radius)),
+                                   -pose.translation.z() + 2.0 * radius + 10.0);
+
+  Lighting lighting;
+  lighting.direction = Eigen::Vector3d(args.lightDir[0], args.lightDir[1], args.lightDir[2]);
+  lighting.ambient = args.ambient;
+  lighting.diffuse = args.diffuse;
+  OffscreenRenderer renderer(mesh, RenderOptions{args.supersample});
+  const RenderResult result = renderer.render(pose, camera, lighting);
+  writeImage(args.out, result.bgra);
+
+  if (!args.outDepth.empty()) writeImage(args.outDepth, result.depthZeroBackground());
+
+  if (landmarks) {
+    const int count = landmarks->points.size();
+    LandmarkSet projected(count, 2);
+    std::vector<bool> visible(static_cast<std::size_t>(count), false);
+    int hidden = 0;
+    for (int i = 0; i < count; ++i) {
+      if (!landmarks->points.has(i)) continue;
+      const Eigen::Vector3d model = landmarks->points.point(i) - centre;
+      visible[static_cast<std::size_t>(i)] = result.isVisible(model);
+      hidden += !visible[static_cast<std::size_t>(i)];
+      projected.set(i, Eigen::Vector2d(projectPoint(model, pose, camera)));
+    }
+    if (!args.outLandmarks.empty()) {
+      LandmarkSet written = projected;
+      if (args.hiddenMissing) {
+        for (int i = 0; i < count; ++i) {
+          if (!visible[static_cast<std::size_t>(i)]) written.setMissing(i);
+        }
+      }
+      writeLandmarks(args.outLandmarks, written, *landmarks->scheme);
+    }
+    if (!args.overlay.empty()) {
+      writeImage(args.overlay, drawOverlay(result, projected, visible, *landmarks->scheme));
+    }
+    std::cout << "landmarks: " << projected.presentCount() << " projected, " << hidden
+              << " hidden at this pose\n";
+  } else if (!args.outLandmarks.empty() || !args.overlay.empty()) {
+    throw CLI::ValidationError("--out-landmarks/--overlay", "need --landmarks");
+  }
+  std::cout << "rendered " << args.mesh.filename().string() << " (" << mesh.vertexCount()
+            << " vertices) at pitch " << args.pitch << ", yaw " << args.yaw << ", roll "
+            << args.roll << " degrees, " << -pose.translation.z() << " mm away, to "
+            << args.out.string() << '\n';
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& root) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* command = root.add_subcommand(
+      "render",
+      "Render a textured mesh offscreen at a head pose (transparent PNG), with optional "
+      "projected landmarks, depth map and landmark overlay");
+  command->add_option("--mesh", args->mesh, "Textured mesh: OBJ (+MTL, image), PLY, glTF/GLB")
+      ->required();
+  command->add_option("--landmarks", args->landmarks,
+                      "3D landmarks of the mesh (.pts/.ljson/.csv, 25 thesis or 68 iBUG points); "
+                      "the head then turns about landmark 1");
+  command
+      ->add_option("--yaw", args->yaw, "Yaw in degrees (positive: nose towards the subject's left)")
+      ->default_val(0.0);
+  command->add_option("--pitch", args->pitch, "Pitch in degrees (positive: nose down)")
+      ->default_val(0.0);
+  command->add_option("--roll", args->roll, "Roll in degrees (positive: counter-clockwise)")
+      ->default_val(0.0);
+  command->add_option("--size", args->size, "Image width and height in pixels")
+      ->default_val(256)
+      ->check(CLI::Range(8, 8192));
+  command->add_option("--fov", args->fov, "Vertical field of view in degrees")
+      ->default_val(30.0)
+      ->check(CLI::Range(1.0, 150.0));
+  command->add_option("--fill", args->fill, "Share of the image the head's larger side spans")
+      ->default_val(0.85)
+      ->check(CLI::Range(0.05, 1.0));
+  command->add_option("--light-dir", args->lightDir, "Direction towards the light, eye space X,Y,Z")
+      ->expected(3)
+      ->delimiter(',')
+      ->default_str("0.3,0.4,1");
+  command->add_option("--ambient", args->ambient, "Ambient light intensity")
+      ->default_val(Lighting{}.ambient)
+      ->check(CLI::Range(0.0, 2.0));
+  command->add_option("--diffuse", args->diffuse, "Directional light intensity")
+      ->default_val(Lighting{}.diffuse)
+      ->check(CLI::Range(0.0, 2.0));
+  command
+      ->add_option("--supersample", args->supersample,
+                   "Render at N times the size and average down (anti-aliasing)")
+      ->default_val(2)
+      ->check(CLI::Range(1, 4));
+  command->add_option("--up", args->up, "The mesh file's up axis (+x, -y, +z ...)")
+      ->default_val("+y");
+  command->add_option("--front", args->front, "The mesh file's axis out of the face")
+      ->default_val("+z");
+  command->add_flag("--allow-untextured", args->allowUntextured,
+                    "Render a mesh without texture in mid-grey instead of failing");
+  command->add_option("--out", args->out, "Output image (.png keeps the transparent background)")
+      ->required();
+  command->add_option("--out-landmarks", args->outLandmarks,
+                      "Projected 2D landmarks (.pts/.ljson/.csv), in the landmark file's scheme");
+  command->add_flag("--hidden-missing", args->hiddenMissing,
+                    "Write self-occluded landmarks as missing in --out-landmarks");
+  command->add_option("--out-depth", args->outDepth,
+                      "Depth map: 32-bit float TIFF, eye distance in mm, 0 on the background");
+  command->add_option("--overlay", args->overlay,
+                      "Image of the render with the landmarks (numbered 1..N; filled = visible, "
+                      "hollow = hidden)");
+  command->callback([args] { runRender(*args); });
+}
+
+}  // namespace clm3d::cli
