@@ -200,7 +200,8 @@ class SceneMerger {
     for (const auto& image : images_) anyTexture = anyTexture || !image.swatch;
     if (!anyTexture) {
       if (options.requireTexture) {
-        throwInputError(path_, "no texture image: the material names no texture file");
+        throwInputError(
+            path_, "no texture: no material names a texture image (is the .mtl file missing?)");
       }
       mesh_.texture = cv::Mat(1, 1, CV_8UC3, cv::Scalar(128, 128, 128));
       if (!allHaveUvs_) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), Eigen::Vector2f::Zero());
