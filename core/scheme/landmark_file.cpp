@@ -55,16 +55,14 @@ LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expec
     }
     case LandmarkFormat::Csv: {
       const auto file = parseLandmarkCsv(text, source);
-      const Scheme* scheme = expected != nullptr ? expected : builtInOfSize(file.points.size());
-      const bool idsInScheme =
-          scheme != nullptr && std::all_of(file.ids.begin(), file.ids.end(), [&](const auto& id) {
-            return scheme->indexOf(id) >= 0;
-          });
-      if (expected != nullptr || idsInScheme) {
-        points = csvToScheme(file, *scheme, source);
-      } else {
-        points = file.points;
-      }
+      const auto holdsAllIds = [&](const Scheme& scheme) {
+        return std::all_of(file.ids.begin(), file.ids.end(),
+                           [&](const auto& id) { return scheme.indexOf(id) >= 0; });
+      };
+      const Scheme* scheme = expected;
+      if (scheme == nullptr && holdsAllIds(Scheme::thesis25())) scheme = &Scheme::thesis25();
+      if (scheme == nullptr && holdsAllIds(Scheme::ibug68())) scheme = &Scheme::ibug68();
+      points = scheme != nullptr ? csvToScheme(file, *scheme, source) : file.points;
       break;
     }
   }

@@ -19,7 +19,8 @@ LandmarkFormat landmarkFormatOf(const std::filesystem::path& path);
 // ids are applied) and must number expected->size(), else InputError "FILE: has 68 points, scheme
 // thesis25 expects 25" - except that a 68-point file read for a scheme named thesis25 is converted
 // with ibug68ToThesis25 (some thesis points are then missing, see docs/landmarks.md).
-// Without `expected`, LJSON layouts and CSV ids of the built-in scheme of the same size apply.
+// Without `expected`, LJSON layouts of the built-in scheme of the same size apply, and CSV rows are
+// placed in the built-in scheme holding all their ids (else kept in file order).
 LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expected = nullptr);
 
 // Writes atomically in the format of the extension; ids and labels come from the scheme, whose

