@@ -17,6 +17,7 @@
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_import.hpp"
+#include "core/mesh/mesh_transform.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -41,6 +42,7 @@ struct RenderArgs {
   int supersample = 2;
   std::string up = "+y";
   std::string front = "+z";
+  std::string orient = "auto";
   bool allowUntextured = false;
   bool hiddenMissing = false;
   fs::path out;
@@ -63,40 +65,34 @@ Eigen::Vector3d parseAxis(const std::string& text, const std::string& option) {
   throw CLI::ValidationError(option, "expected an axis such as +y, -z or x, got '" + text + "'");
 }
 
-// Rotation taking the file's axes to the model convention (+y up, +z out of the face).
-Eigen::Matrix3d alignment(const RenderArgs& args) {
-  const Eigen::Vector3d up = parseAxis(args.up, "--up");
-  const Eigen::Vector3d front = parseAxis(args.front, "--front");
-  if (std::abs(up.dot(front)) > 0.5) {
-    throw CLI::ValidationError("--up/--front", "the up and front axes must differ");
-  }
-  Eigen::Matrix3d fileFromModel;
-  fileFromModel.col(0) = up.cross(front);
-  fileFromModel.col(1) = up;
-  fileFromModel.col(2) = front;
-  return fileFromModel.transpose();
-}
-
 struct Landmarks {
   LandmarkSet points;
   const Scheme* scheme = nullptr;
   std::optional<Eigen::Vector3d> landmarkOne;  // thesis landmark 1, between the eyes
+  std::optional<Eigen::Vector3d> leftEye;      // thesis landmarks 8 and 11, the eye centres
+  std::optional<Eigen::Vector3d> rightEye;
 };
 
 Landmarks readModelLandmarks(const fs::path& path) {
   Landmarks result;
   result.points = readLandmarks(path);
   if (result.points.dims() != 3) throwInputError(path, "expected 3D landmarks (x, y, z)");
+  LandmarkSet thesis;
   if (result.points.size() == Scheme::thesis25().size()) {
     result.scheme = &Scheme::thesis25();
-    if (result.points.has(0)) result.landmarkOne = result.points.point(0);
+    thesis = result.points;
   } else if (result.points.size() == Scheme::ibug68().size()) {
     result.scheme = &Scheme::ibug68();
-    const LandmarkSet thesis = ibug68ToThesis25(result.points);
-    if (thesis.has(0)) result.landmarkOne = thesis.point(0);
+    thesis = ibug68ToThesis25(result.points);
   } else {
     throwInputError(path, "has " + std::to_string(result.points.size()) +
                               " points; expected 25 (thesis25) or 68 (ibug68)");
+  }
+  if (thesis.has(0)) result.landmarkOne = thesis.point(0);
+  const auto [left, right] = Scheme::thesis25().normalisationPair();  // eye centres
+  if (thesis.has(left) && thesis.has(right)) {
+    result.leftEye = thesis.point(left);
+    result.rightEye = thesis.point(right);
   }
   return result;
 }
@@ -177,33 +173,36 @@ cv::Mat drawOverlay(const RenderResult& render, const LandmarkSet& projected,
 }
 
 void runRender(const RenderArgs& args) {
+  if (args.landmarks.empty() && (!args.outLandmarks.empty() || !args.overlay.empty())) {
+    throw CLI::ValidationError("--out-landmarks/--overlay", "need --landmarks");
+  }
   MeshLoadOptions loadOptions;
   loadOptions.requireTexture = !args.allowUntextured;
   TexturedMesh mesh = loadTexturedMesh(args.mesh, loadOptions);
 
-  // To the model convention: +y up, +z out of the face.
-  const Eigen::Matrix3d align = alignment(args);
-  if (!align.isIdentity()) {
-    const Eigen::Matrix3f a = align.cast<float>();
-    for (auto& p : mesh.positions) p = a * p;
-    for (auto& n : mesh.normals) n = a * n;
-  }
-
   std::optional<Landmarks> landmarks;
-  if (!args.landmarks.empty()) {
-    landmarks = readModelLandmarks(args.landmarks);
-    for (int i = 0; i < landmarks->points.size(); ++i) {
-      if (landmarks->points.has(i))
-        landmarks->points.set(i, Eigen::Vector3d(align * landmarks->points.point(i)));
-    }
-    if (landmarks->landmarkOne) landmarks->landmarkOne = align * *landmarks->landmarkOne;
-  }
+  if (!args.landmarks.empty()) landmarks = readModelLandmarks(args.landmarks);
 
-  // The centre of rotation: landmark 1 when known, else the centre of the bounding box.
+  // To the model convention (+x subject's left, +y up, +z out of the face), turning about
+  // landmark 1 when known, else about the centre of the bounding box.
+  const Eigen::Vector3d up = parseAxis(args.up, "--up");
+  const Eigen::Vector3d front = parseAxis(args.front, "--front");
+  if (up.dot(front) != 0.0) throw CLI::ValidationError("--up/--front", "the axes must differ");
+  const bool level = args.orient == "auto" && landmarks && landmarks->leftEye;
+  const Eigen::Matrix3d rotation =
+      level ? eyeLevelRotation(*landmarks->leftEye, *landmarks->rightEye, up)
+            : axesToModelRotation(up, front);
   const Eigen::Vector3d centre = landmarks && landmarks->landmarkOne
                                      ? *landmarks->landmarkOne
                                      : Eigen::Vector3d(mesh.bounds().center().cast<double>());
-  mesh.translate(-centre.cast<float>());
+  transformMesh(mesh, rotation, -(rotation * centre));
+  if (landmarks) {
+    for (int i = 0; i < landmarks->points.size(); ++i) {
+      if (landmarks->points.has(i)) {
+        landmarks->points.set(i, Eigen::Vector3d(rotation * (landmarks->points.point(i) - centre)));
+      }
+    }
+  }
 
   Camera camera = Camera::fromVerticalFov(args.size, args.size, args.fov);
   Pose pose = Pose::fromDegrees(args.pitch, args.yaw, args.roll);
@@ -231,7 +230,7 @@ void runRender(const RenderArgs& args) {
     int hidden = 0;
     for (int i = 0; i < count; ++i) {
       if (!landmarks->points.has(i)) continue;
-      const Eigen::Vector3d model = landmarks->points.point(i) - centre;
+      const Eigen::Vector3d model = landmarks->points.point(i);
       visible[static_cast<std::size_t>(i)] = result.isVisible(model);
       hidden += !visible[static_cast<std::size_t>(i)];
       projected.set(i, Eigen::Vector2d(projectPoint(model, pose, camera)));
@@ -250,9 +249,8 @@ void runRender(const RenderArgs& args) {
     }
     std::cout << "landmarks: " << projected.presentCount() << " projected, " << hidden
               << " hidden at this pose\n";
-  } else if (!args.outLandmarks.empty() || !args.overlay.empty()) {
-    throw CLI::ValidationError("--out-landmarks/--overlay", "need --landmarks");
   }
+  if (level) std::cout << "orientation: levelled on the eye centres of the landmarks\n";
   std::cout << "rendered " << args.mesh.filename().string() << " (" << mesh.vertexCount()
             << " vertices) at pitch " << args.pitch << ", yaw " << args.yaw << ", roll "
             << args.roll << " degrees, " << -pose.translation.z() << " mm away, to "
@@ -307,6 +305,12 @@ void addRenderCommand(CLI::App& root) {
       ->default_val("+y");
   command->add_option("--front", args->front, "The mesh file's axis out of the face")
       ->default_val("+z");
+  command
+      ->add_option("--orient", args->orient,
+                   "auto: level the head on the eye centres of --landmarks (yaw 0 = frontal), "
+                   "else use the file's axes; file: always the file's axes (--up, --front)")
+      ->default_val("auto")
+      ->check(CLI::IsMember({"auto", "file"}));
   command->add_flag("--allow-untextured", args->allowUntextured,
                     "Render a mesh without texture in mid-grey instead of failing");
   command->add_option("--out", args->out, "Output image (.png keeps the transparent background)")

@@ -63,7 +63,9 @@ TEST(RenderCli, ProjectsLandmarks) {
   for (int i = 0; i < 25; ++i)
     points.set(i, Eigen::Vector3d(-40.0 + 20.0 * (i % 5), 40.0 - 20.0 * (i / 5), 0.0));
   points.set(0, Eigen::Vector3d(0, 0, 0));
-  points.set(24, Eigen::Vector3d(0, 0, -30));  // behind the square: hidden
+  points.set(7, Eigen::Vector3d(20, 10, 0));    // left eye centre (subject's left = +x)
+  points.set(10, Eigen::Vector3d(-20, 10, 0));  // right eye centre
+  points.set(24, Eigen::Vector3d(0, 0, -30));   // behind the square: hidden
   const auto landmarks = dir / "square.ljson";
   writeLandmarks(landmarks, points, Scheme::thesis25());
   const auto out2d = dir / "square.pts";
@@ -79,6 +81,13 @@ TEST(RenderCli, ProjectsLandmarks) {
   EXPECT_FALSE(projected.has(24));
   EXPECT_GT(projected.point(0).x(), 40);
   EXPECT_LT(projected.point(0).x(), 88);
+  // Yaw 20 turns the subject's left (+x) away from the camera: the left eye is nearer the centre.
+  const double leftOffset = projected.point(7).x() - projected.point(0).x();
+  const double rightOffset = projected.point(0).x() - projected.point(10).x();
+  EXPECT_GT(leftOffset, 0);
+  EXPECT_GT(rightOffset, 0);
+  EXPECT_LT(leftOffset, rightOffset);
+  EXPECT_NEAR(projected.point(7).y(), projected.point(10).y(), 1.0);
   EXPECT_TRUE(std::filesystem::exists(overlay));
 }
 
