@@ -66,6 +66,23 @@ TEST(LandmarksCli, InfoListsMissingPointsByName) {
   EXPECT_NE(result.output.find("nose_tip"), std::string::npos) << result.output;
 }
 
+TEST(LandmarksCli, ConvertsToALabSchemeById) {
+  test::TempDir dir;
+  test::writeFile(dir / "lab.json", R"({"name": "lab3", "landmarks": [{"id": "nose_tip"},
+      {"id": "left_eye_outer"}, {"id": "forehead"}], "normalisation": [0, 1]})");
+  const auto in = writeIbugPts(dir);
+  const auto mid = dir / "face25.ljson";
+  ASSERT_EQ(runClm3d("landmarks convert --in " + in.string() + " --out " + mid.string() +
+                     " --to thesis25")
+                .exitCode,
+            0);
+  const auto out = dir / "lab.csv";
+  const auto result = runClm3d("landmarks convert --in " + mid.string() + " --out " + out.string() +
+                               " --to " + (dir / "lab.json").string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(test::readFile(out), "id,x,y\nnose_tip,,\nleft_eye_outer,45,90\nforehead,,\n");
+}
+
 TEST(LandmarksCli, BadInputExitsOneNamingTheFile) {
   test::TempDir dir;
   const auto bad = dir / "broken.pts";

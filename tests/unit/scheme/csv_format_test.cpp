@@ -40,6 +40,15 @@ TEST(LandmarkCsv, PlacesRowsById) {
   EXPECT_EQ(set.point(11), Eigen::Vector3d(5, 6, 0));
 }
 
+TEST(LandmarkCsv, KeepsFileOrderWithoutScheme) {
+  const auto file = parseLandmarkCsv("id,x,y,z\nb,1,2,3\na,,,\n", "face.csv");
+  EXPECT_EQ(file.ids, (std::vector<std::string>{"b", "a"}));
+  EXPECT_EQ(file.lines, (std::vector<int>{2, 3}));
+  EXPECT_EQ(file.points.dims(), 3);
+  EXPECT_EQ(file.points.point(0), Eigen::Vector3d(1, 2, 3));
+  EXPECT_FALSE(file.points.has(1));
+}
+
 TEST(LandmarkCsv, BadInputsNameFileAndLine) {
   struct Case {
     std::string text;

@@ -141,6 +141,16 @@ TEST(Scheme, ValidationErrorsNameTheFileAndField) {
        "regions[0].colour: must be \"#rrggbb\""},
       {R"({"name": "x", "version": 2, "landmarks": [{"id": "a"}], "normalisation": [0, 0]})",
        "unsupported scheme version"},
+      {R"({"name": "x", "landmarks": [{"id": "a"}, {"id": "b"}], "normalisation": [0, 1],
+          "ljson_layouts": [{"name": "l", "labels": [{"label": "g", "landmarks": ["b"]}]}]})",
+       "ljson_layouts[0]: does not place landmark \"a\""},
+      {R"({"name": "x", "landmarks": [{"id": "a"}, {"id": "b"}], "normalisation": [0, 1],
+          "ljson_layouts": [{"name": "l", "labels": [{"label": "g", "landmarks": ["b", 1]}]}]})",
+       "ljson_layouts[0].labels[0].landmarks[1]: landmark \"b\" appears twice"},
+      {R"({"name": "x", "landmarks": [{"id": "a b"}], "normalisation": [0, 0]})",
+       "landmarks[0].id: \"a b\" is not a word"},
+      {R"({"name": "x", "landmarks": [{"id": "a"}, {"id": "b"}], "normalisation": ["a", "a"]})",
+       "normalisation: must name two different landmarks"},
   };
   for (const auto& c : cases) {
     const auto message = schemeError(c.json);
