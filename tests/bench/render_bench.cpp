@@ -39,6 +39,20 @@ void BM_RenderJames256(benchmark::State& state) {
   state.counters["renders/s"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
+// Setting up a renderer: OSMesa context, vertex buffers, texture upload and mipmaps.
+void BM_CreateRendererJames(benchmark::State& state) {
+  const TexturedMesh* mesh = jamesMesh();
+  if (mesh == nullptr) {
+    state.SkipWithError("../shared/data not found (set CLM3D_DATA): james scan needed");
+    return;
+  }
+  for (auto _ : state) {
+    OffscreenRenderer renderer(*mesh);
+    benchmark::DoNotOptimize(&renderer);
+  }
+}
+BENCHMARK(BM_CreateRendererJames)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Real time: with two threads, renders/s is the combined rate of both.
 BENCHMARK(BM_RenderJames256)->Arg(1)->ArgName("supersample")->Threads(1)->UseRealTime();
 BENCHMARK(BM_RenderJames256)->Arg(1)->ArgName("supersample")->Threads(2)->UseRealTime();
