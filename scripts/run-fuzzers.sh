@@ -42,11 +42,12 @@ for target in "${targets[@]}"; do
     -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$artefacts/" >"$log" 2>&1
   status=$?
   runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
+  coverage=$(grep -oE ' cov: [0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1)
   if [[ $status -ne 0 ]]; then
     summary+=("$target: FAILED (exit $status) after ${runs:-?} executions; log $log, inputs in $artefacts")
     failed=1
   else
-    summary+=("$target: ok, ${runs:-?} executions in ${seconds} s")
+    summary+=("$target: ok, ${runs:-?} executions in ${seconds} s, coverage ${coverage:-?} edges")
   fi
 done
 
