@@ -206,30 +206,34 @@ TEST(OffscreenRenderer, ThreadsRenderTheSameAsOneThread) {
   const TexturedMesh mesh = texturedSquare();
   const Camera camera = testCamera(128);
   std::vector<Pose> poses;
-  for (int i = 0; i < 12; ++i)
+  for (int i = 0; i < 12; ++i) {
     poses.push_back(Pose::fromDegrees(3.0 * i - 15, 5.0 * i - 30, i, {0, 0, -450}));
+  }
   std::vector<RenderResult> sequential;
   {
     OffscreenRenderer renderer(mesh);
     for (const Pose& pose : poses) sequential.push_back(renderer.render(pose, camera));
   }
   constexpr int kThreads = 3;
+  // Each thread goes through the poses in its own order, so renders that leaked into each other
+  // (shared buffers or state) would show.
   std::vector<std::vector<RenderResult>> parallel(kThreads);
   std::vector<std::thread> threads;
   for (int t = 0; t < kThreads; ++t) {
     threads.emplace_back([&, t] {
       OffscreenRenderer renderer(mesh);
-      for (int round = 0; round < 3; ++round) {
-        for (const Pose& pose : poses)
-          parallel[static_cast<std::size_t>(t)].push_back(renderer.render(pose, camera));
+      for (std::size_t i = 0; i < poses.size() * 3; ++i) {
+        const Pose& pose = poses[(i + 5 * static_cast<std::size_t>(t)) % poses.size()];
+        parallel[static_cast<std::size_t>(t)].push_back(renderer.render(pose, camera));
       }
     });
   }
   for (auto& thread : threads) thread.join();
-  for (const auto& results : parallel) {
+  for (std::size_t t = 0; t < parallel.size(); ++t) {
+    const auto& results = parallel[t];
     ASSERT_EQ(results.size(), poses.size() * 3);
     for (std::size_t i = 0; i < results.size(); ++i) {
-      const RenderResult& expected = sequential[i % poses.size()];
+      const RenderResult& expected = sequential[(i + 5 * t) % poses.size()];
       EXPECT_EQ(cv::norm(results[i].bgra, expected.bgra, cv::NORM_INF), 0.0);
       cv::Mat a = results[i].depthZeroBackground();
       cv::Mat b = expected.depthZeroBackground();
