@@ -175,14 +175,17 @@ TEST(MeshImport, PlyWithTextureCommentRoundTrip) {
   expectInputErrorNaming(dir / "square.ply", "skin.png");
 }
 
-// A glTF 2.0 file with the buffer and the PNG texture embedded as data URIs, and a node
-// transform (translation by +100 in x) that the importer must apply.
-std::string gltfSquare(const TexturedMesh& mesh) {
+enum class GltfKind { DataUris, ExternalTexture, Glb };
+
+// A glTF 2.0 square with a node transform (translation by +100 in x) that the importer must
+// apply: buffer and PNG texture as data URIs, or the texture as a file beside it ("skin.png",
+// written by the caller), or everything in one binary .glb.
+std::string gltfSquare(const TexturedMesh& mesh, GltfKind kind) {
   std::vector<float> positions;
   std::vector<float> uvs;
   for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
-    positions.insert(positions.end(),
-                     {mesh.positions[i].x(), mesh.positions[i].y(), mesh.positions[i].z()});
+    const auto& p = mesh.positions[i];
+    positions.insert(positions.end(), {p.x(), p.y(), p.z()});
     uvs.insert(uvs.end(), {mesh.uvs[i].x(), 1.0F - mesh.uvs[i].y()});  // glTF: (0,0) = top-left
   }
   std::vector<std::uint16_t> indices;
@@ -193,46 +196,87 @@ std::string gltfSquare(const TexturedMesh& mesh) {
   appendBytes(buffer, positions);
   appendBytes(buffer, uvs);
   appendBytes(buffer, indices);
+  buffer.resize((buffer.size() + 3) / 4 * 4, 0);
   std::vector<unsigned char> png;
   cv::imencode(".png", mesh.texture, png);
   const std::size_t uvOffset = positions.size() * 4;
   const std::size_t indexOffset = uvOffset + uvs.size() * 4;
-  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+  const std::size_t pngOffset = buffer.size();
+  std::string image;
+  if (kind == GltfKind::DataUris) image = R"({"uri":"data:image/png;base64,)" + base64(png) + "\"}";
+  if (kind == GltfKind::ExternalTexture) image = R"({"uri":"skin.png"})";
+  if (kind == GltfKind::Glb) {
+    image = R"({"bufferView":3,"mimeType":"image/png"})";
+    buffer.insert(buffer.end(), png.begin(), png.end());
+    buffer.resize((buffer.size() + 3) / 4 * 4, 0);
+  }
+  const std::string bufferUri =
+      kind == GltfKind::Glb
+          ? ""
+          : R"(,"uri":"data:application/octet-stream;base64,)" + base64(buffer) + "\"";
+  std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
   "nodes":[{"mesh":0,"translation":[100,0,0]}],
   "meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],
   "materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],
   "textures":[{"source":0}],
-  "images":[{"uri":"data:image/png;base64,)" +
-         base64(png) + R"("}],
+  "images":[)" +
+      image + R"(],
   "buffers":[{"byteLength":)" +
-         std::to_string(buffer.size()) + R"(,"uri":"data:application/octet-stream;base64,)" +
-         base64(buffer) + R"("}],
+      std::to_string(buffer.size()) + bufferUri + R"(}],
   "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" +
-         std::to_string(uvOffset) + R"(},
+      std::to_string(uvOffset) + R"(},
     {"buffer":0,"byteOffset":)" +
-         std::to_string(uvOffset) + R"(,"byteLength":)" + std::to_string(indexOffset - uvOffset) +
-         R"(},
+      std::to_string(uvOffset) + R"(,"byteLength":)" + std::to_string(indexOffset - uvOffset) +
+      R"(},
     {"buffer":0,"byteOffset":)" +
-         std::to_string(indexOffset) + R"(,"byteLength":)" + std::to_string(indices.size() * 2) +
-         R"(}],
+      std::to_string(indexOffset) + R"(,"byteLength":)" + std::to_string(indices.size() * 2) + R"(},
+    {"buffer":0,"byteOffset":)" +
+      std::to_string(pngOffset) + R"(,"byteLength":)" + std::to_string(png.size()) + R"(}],
   "accessors":[
     {"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[-10,-10,0],"max":[10,10,0]},
     {"bufferView":1,"componentType":5126,"count":4,"type":"VEC2"},
     {"bufferView":2,"componentType":5123,"count":6,"type":"SCALAR"}]})";
+  if (kind != GltfKind::Glb) return json;
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  // GLB: 12-byte header, then a JSON chunk and a BIN chunk (little-endian lengths and tags).
+  std::vector<std::uint32_t> header = {
+      0x46546C67U, 2U, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + buffer.size())};
+  std::vector<unsigned char> glb;
+  appendBytes(glb, header);
+  appendBytes(glb,
+              std::vector<std::uint32_t>{static_cast<std::uint32_t>(json.size()), 0x4E4F534AU});
+  glb.insert(glb.end(), json.begin(), json.end());
+  appendBytes(glb,
+              std::vector<std::uint32_t>{static_cast<std::uint32_t>(buffer.size()), 0x004E4942U});
+  glb.insert(glb.end(), buffer.begin(), buffer.end());
+  return std::string(glb.begin(), glb.end());
 }
 
-TEST(MeshImport, GltfWithEmbeddedTextureAndNodeTransform) {
-  TempDir dir;
+TEST(MeshImport, GltfAndGlbWithTexturesAndNodeTransform) {
   const TexturedMesh original = square();
-  writeFile(dir / "square.gltf", gltfSquare(original));
-  const TexturedMesh loaded = loadTexturedMesh(dir / "square.gltf");
-  EXPECT_EQ(loaded.triangleCount(), 2U);
-  EXPECT_EQ(cv::norm(loaded.texture, original.texture, cv::NORM_INF), 0.0);
-  EXPECT_NEAR(loaded.bounds().center().x(), 100.0F, 1e-4F);
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Eigen::Vector3f moved = original.positions[i] + Eigen::Vector3f(100, 0, 0);
-    const Eigen::Vector2f uv = uvAt(loaded, moved);
-    EXPECT_TRUE(uv.isApprox(original.uvs[i], 1e-5F)) << uv.transpose();
+  for (const auto& [kind, name] : {std::pair{GltfKind::DataUris, "embedded.gltf"},
+                                   std::pair{GltfKind::ExternalTexture, "external.gltf"},
+                                   std::pair{GltfKind::Glb, "binary.glb"}}) {
+    SCOPED_TRACE(name);
+    TempDir dir;
+    if (kind == GltfKind::ExternalTexture) {
+      ASSERT_TRUE(cv::imwrite((dir / "skin.png").string(), original.texture));
+    }
+    writeFile(dir / name, gltfSquare(original, kind));
+    const TexturedMesh loaded = loadTexturedMesh(dir / name);
+    EXPECT_EQ(loaded.triangleCount(), 2U);
+    EXPECT_EQ(cv::norm(loaded.texture, original.texture, cv::NORM_INF), 0.0);
+    EXPECT_NEAR(loaded.bounds().center().x(), 100.0F, 1e-4F);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Eigen::Vector3f moved = original.positions[i] + Eigen::Vector3f(100, 0, 0);
+      const Eigen::Vector2f uv = uvAt(loaded, moved);
+      EXPECT_TRUE(uv.isApprox(original.uvs[i], 1e-5F)) << uv.transpose();
+    }
+    if (kind == GltfKind::ExternalTexture) {
+      std::filesystem::remove(dir / "skin.png");
+      expectInputErrorNaming(dir / name, "skin.png");
+    }
   }
 }
 
