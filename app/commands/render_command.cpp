@@ -6,14 +6,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "app/commands/commands.hpp"
-#include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_import.hpp"
@@ -21,6 +19,8 @@
 #include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
+#include "core/viz/image_file.hpp"
+#include "core/viz/landmark_overlay.hpp"
 
 namespace clm3d::cli {
 namespace {
@@ -126,52 +126,6 @@ Eigen::Vector3d frameMesh(const TexturedMesh& mesh, const Pose& rotation, const 
   return translation;
 }
 
-void writeImage(const fs::path& path, const cv::Mat& image) {
-  std::vector<unsigned char> bytes;
-  std::string extension = path.extension().string();
-  if (extension.empty()) throwInputError(path, "needs an image extension such as .png");
-  bool encoded = false;
-  try {
-    encoded = cv::imencode(extension, image, bytes);
-  } catch (const cv::Exception&) {
-    encoded = false;
-  }
-  if (!encoded) throwInputError(path, "cannot encode an image of this type ('" + extension + "')");
-  writeBytesAtomically(path, bytes);
-}
-
-cv::Mat drawOverlay(const RenderResult& render, const LandmarkSet& projected,
-                    const std::vector<bool>& visible, const Scheme& scheme) {
-  cv::Mat overlay = render.bgra.clone();
-  const int size = std::min(overlay.cols, overlay.rows);
-  const int radius = std::max(2, size / 120);
-  const double fontScale = std::max(0.3, size / 900.0);
-  const int shift = 4;  // sub-pixel drawing
-  for (int i = 0; i < projected.size(); ++i) {
-    if (!projected.has(i)) continue;
-    const Eigen::Vector3d p = projected.point(i);
-    const int region = scheme.regionOf(i);
-    cv::Scalar colour(0, 255, 255, 255);
-    if (region >= 0) {
-      const RgbColour c = scheme.regions()[static_cast<std::size_t>(region)].colour;
-      colour = cv::Scalar(c.b, c.g, c.r, 255);
-    }
-    const cv::Point centre(static_cast<int>(std::lround(p.x() * (1 << shift))),
-                           static_cast<int>(std::lround(p.y() * (1 << shift))));
-    const bool shown = visible[static_cast<std::size_t>(i)];
-    cv::circle(overlay, centre, radius << shift, cv::Scalar(0, 0, 0, 255), shown ? cv::FILLED : 3,
-               cv::LINE_AA, shift);
-    cv::circle(overlay, centre, (radius - 1) << shift, colour, shown ? cv::FILLED : 1, cv::LINE_AA,
-               shift);
-    const cv::Point label(static_cast<int>(p.x()) + radius + 1, static_cast<int>(p.y()) - radius);
-    const std::string text = std::to_string(i + 1);  // thesis / .pts numbering, 1-based
-    cv::putText(overlay, text, label, cv::FONT_HERSHEY_SIMPLEX, fontScale, cv::Scalar(0, 0, 0, 255),
-                3, cv::LINE_AA);
-    cv::putText(overlay, text, label, cv::FONT_HERSHEY_SIMPLEX, fontScale, colour, 1, cv::LINE_AA);
-  }
-  return overlay;
-}
-
 void runRender(const RenderArgs& args) {
   if (args.landmarks.empty() && (!args.outLandmarks.empty() || !args.overlay.empty())) {
     throw CLI::ValidationError("--out-landmarks/--overlay", "need --landmarks");
@@ -245,7 +199,9 @@ void runRender(const RenderArgs& args) {
       writeLandmarks(args.outLandmarks, written, *landmarks->scheme);
     }
     if (!args.overlay.empty()) {
-      writeImage(args.overlay, drawOverlay(result, projected, visible, *landmarks->scheme));
+      cv::Mat overlay = result.bgra.clone();
+      drawLandmarks(overlay, projected, visible, *landmarks->scheme);
+      writeImage(args.overlay, overlay);
     }
     std::cout << "landmarks: " << projected.presentCount() << " projected, " << hidden
               << " hidden at this pose\n";
