@@ -120,7 +120,8 @@ Eigen::Vector3d frameMesh(const TexturedMesh& mesh, const Pose& rotation, const 
     translation.x() -= offset.x() * depth / camera.focalX();
     translation.y() += offset.y() * depth / camera.focalY();
     // Move so the span becomes `fill`; nearer points grow faster, hence the iteration.
-    translation.z() = -(depth * span / fill);
+    // Never so close that part of the head is behind the camera.
+    translation.z() = std::min(-(depth * span / fill), -(1.1 * radius + camera.near));
     if (std::abs(span - fill) < 1e-3 && offset.norm() < 0.25) break;
   }
   return translation;

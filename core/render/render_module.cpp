@@ -91,6 +91,11 @@ std::vector<std::filesystem::path> renderModuleCandidates() {
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
     candidates.push_back(exe.parent_path() / ".." / "lib" / "clm3d" / CLM3D_RENDER_MODULE_FILE);
+    // A relocated install whose libdir is not plain lib (Debian: lib/x86_64-linux-gnu).
+    const std::filesystem::path relative(CLM3D_RENDER_MODULE_RELATIVE_DIR);
+    if (relative != std::filesystem::path("lib/clm3d")) {
+      candidates.push_back(exe.parent_path() / ".." / relative / CLM3D_RENDER_MODULE_FILE);
+    }
   }
   candidates.push_back(std::filesystem::path(CLM3D_RENDER_MODULE_BUILD_DIR) /
                        CLM3D_RENDER_MODULE_FILE);

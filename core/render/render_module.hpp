@@ -18,8 +18,8 @@ const clm3d_render_api& renderModule();
 std::filesystem::path renderModulePath();
 std::string renderModuleDescription();
 
-// The candidate module files in search order: $CLM3D_RENDER_MODULE, <exe dir>/../lib/clm3d/,
-// the build tree's module folder, the install folder.
+// The candidate module files in search order: $CLM3D_RENDER_MODULE, <exe dir>/../lib/clm3d/
+// (and <exe dir>/../<install libdir>/clm3d/), the build tree's module folder, the install folder.
 std::vector<std::filesystem::path> renderModuleCandidates();
 
 }  // namespace clm3d

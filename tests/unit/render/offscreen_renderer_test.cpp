@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -277,6 +278,23 @@ TEST(OffscreenRenderer, RejectsInvalidMeshesAndCameras) {
   Camera bad = testCamera();
   bad.width = 0;
   EXPECT_THROW(renderer.render(Pose(), bad), Error);
+}
+
+}  // namespace
+}  // namespace clm3d
+
+namespace clm3d {
+namespace {
+
+TEST(RenderModule, SearchOrderStartsWithTheEnvironmentThenTheExecutable) {
+  ::setenv("CLM3D_RENDER_MODULE", "/nonexistent/custom.so", 1);
+  const auto candidates = renderModuleCandidates();
+  ::unsetenv("CLM3D_RENDER_MODULE");
+  ASSERT_GE(candidates.size(), 4U);
+  EXPECT_EQ(candidates[0], std::filesystem::path("/nonexistent/custom.so"));
+  EXPECT_EQ(candidates[1].parent_path().filename(), "clm3d");
+  EXPECT_EQ(candidates[1].parent_path().parent_path().filename(), "lib");
+  EXPECT_EQ(renderModuleCandidates().front(), candidates[1]);  // without the variable
 }
 
 }  // namespace
