@@ -47,7 +47,7 @@ std::vector<cv::Mat> renderTrainingViews(const SynthHead& head, int size) {
     for (double yaw : {-60.0, -30.0, 0.0, 30.0, 60.0}) {
       Camera camera = Camera::fromVerticalFov(size, size, 20.0);
       Pose pose = Pose::fromDegrees(pitch, yaw, 0.0);
-      const double distance = -distanceToFit(radius, camera, 0.92);
+      const double distance = -distanceToFit(radius, camera, 1.1);
       camera = Camera::fromVerticalFov(size, size, 20.0, distance - radius - 10.0,
                                        distance + radius + 10.0);
       pose.translation = Eigen::Vector3d(0.0, 0.0, -distance) - pose.rotation() * pivot;
@@ -78,8 +78,8 @@ void runSynthHead(const SynthHeadArgs& args) {
       for (cv::Mat& tile : renderTrainingViews(head, args.tileSize)) tiles.push_back(tile);
       for (int pitch : {-30, 0, 30}) {
         for (int yaw : {-60, -30, 0, 30, 60}) {
-          captions.push_back("seed " + std::to_string(seed) + "  yaw " + std::to_string(yaw) +
-                             " pitch " + std::to_string(pitch));
+          captions.push_back("#" + std::to_string(seed) + " y" + std::to_string(yaw) + " p" +
+                             std::to_string(pitch));
         }
       }
     }
