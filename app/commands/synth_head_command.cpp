@@ -57,8 +57,22 @@ std::vector<cv::Mat> renderTrainingViews(const SynthHead& head, int size) {
   return tiles;
 }
 
+// "smile,neutral" -> {"smile", "neutral"}.
+std::vector<std::string> splitNames(const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    names.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return names;
+}
+
 void runSynthHead(const SynthHeadArgs& args) {
-  const Expression expression = Expression::preset(args.expression);
+  const std::vector<std::string> names = splitNames(args.expression);
+  std::vector<Expression> expressions;
+  for (const auto& name : names) expressions.push_back(Expression::preset(name));
   SynthOptions options;
   options.textureSize = args.textureSize;
   options.faceStepDegrees = args.faceStep;
@@ -68,12 +82,13 @@ void runSynthHead(const SynthHeadArgs& args) {
   std::vector<std::string> captions;
   for (int i = 0; i < args.count; ++i) {
     const std::uint64_t seed = args.seed + static_cast<std::uint64_t>(i);
-    const SynthHead head = generateHead(seed, expression, options);
+    const std::size_t which = static_cast<std::size_t>(i) % expressions.size();
+    const SynthHead head = generateHead(seed, expressions[which], options);
     const fs::path stem = args.out / ("head-" + std::to_string(seed));
     saveObj(head.mesh, stem.string() + ".obj");
     writeLandmarks(stem.string() + ".ljson", head.landmarks, Scheme::thesis25());
     std::cout << stem.string() << ".obj: " << head.mesh.triangleCount() << " triangles, "
-              << args.expression << '\n';
+              << names[which] << '\n';
     if (!args.contactSheet.empty()) {
       for (cv::Mat& tile : renderTrainingViews(head, args.tileSize)) tiles.push_back(tile);
       for (int pitch : {-30, 0, 30}) {
@@ -100,7 +115,9 @@ void addSynthHeadCommand(CLI::App& root) {
       ->capture_default_str();
   std::string names;
   for (const auto& name : expressionPresetNames()) names += (names.empty() ? "" : ", ") + name;
-  cmd->add_option("--expression", args->expression, "Expression: " + names)->capture_default_str();
+  cmd->add_option("--expression", args->expression,
+                  "Expression: " + names + "; a comma-separated list is used in turn")
+      ->capture_default_str();
   cmd->add_option("--count", args->count, "Number of heads, seeds seed .. seed+count-1")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();

@@ -67,7 +67,7 @@ FaceLayout makeLayout(const HeadIdentity& id, const Expression& ex) {
   L.alarBaseX = id.noseWidth / 2.0;
   L.alarBaseY = L.alaY - 4.0;
   L.nostrilX = 0.17 * id.noseWidth;
-  L.nostrilY = L.subnasaleY + 2.2;
+  L.nostrilY = L.subnasaleY + 3.0;
 
   L.jawDrop = 18.0 * ex.mouthOpen;
   L.lipGap = 16.0 * ex.mouthOpen;
@@ -126,13 +126,13 @@ MouthField mouthField(const FaceLayout& L, double X, double Y) {
   const double at = std::abs(m.t);
   const double bow =
       1.0 + 0.12 * std::exp(-sq((at - 0.22) / 0.1)) - 0.1 * std::exp(-sq(m.t / 0.08));
-  m.upperTop = m.upperBottom + L.upperLip * std::pow(m.width, 0.45) * bow;
-  m.lowerBottom = m.lowerTop - L.lowerLip * std::pow(m.width, 0.55);
+  m.upperTop = m.upperBottom + L.upperLip * std::pow(m.width, 0.7) * bow;
+  m.lowerBottom = m.lowerTop - L.lowerLip * std::pow(m.width, 0.8);
   if (m.width > 0.0) {
     m.upperLip = smoothstep(-0.2, 0.2, std::min(m.upperTop - Y, Y - m.upperBottom + 0.2));
     m.lowerLip = smoothstep(-0.2, 0.2, std::min(Y - m.lowerBottom, m.lowerTop - Y + 0.2));
     if (gap > 0.05) {
-      m.interior = smoothstep(-0.3, 0.3, std::min(m.upperBottom - Y, Y - m.lowerTop));
+      m.interior = smoothstep(-0.8, 1.2, std::min(m.upperBottom - Y, Y - m.lowerTop));
     }
   }
   return m;
@@ -177,7 +177,7 @@ HeadShape::HeadShape(const HeadIdentity& identity, const Expression& expression)
 
   // Jaw: wide at the mouth, its front 3 mm ahead of the origin at the mouth, reaching below the
   // chin, where the plane under the chin cuts it.
-  jaw_.axes = {identity.faceWidth / 2.0, 90.0 + L.jawDrop / 2.0, 62.0};
+  jaw_.axes = {0.46 * identity.faceWidth, 90.0 + L.jawDrop / 2.0, 62.0};
   jaw_.centre.y() = -50.0 - L.jawDrop / 2.0;
   jaw_.centre.z() =
       3.0 - jaw_.axes.z() * std::sqrt(1.0 - sq((L.mouthY - jaw_.centre.y()) / jaw_.axes.y()));
@@ -191,7 +191,7 @@ HeadShape::HeadShape(const HeadIdentity& identity, const Expression& expression)
   chinPlaneOffset_ = chinPlaneNormal_.dot(Eigen::Vector3d(0.0, L.mentonY - 4.0, chinZ));
 
   neckCentreZ_ = -100.0;
-  neckRadiusX_ = 0.36 * identity.headWidth;
+  neckRadiusX_ = 0.33 * identity.headWidth;
   neckRadiusZ_ = 52.0;
   neckBottom_ = L.mentonY - 55.0;
   neckTop_ = -20.0;
@@ -263,6 +263,7 @@ double HeadShape::faceRelief(double X, double Y) const {
 
   // Cheekbones and cheeks; the smile bulge beside the nose; the nasolabial fold.
   h += L.cheekHeight * bump(ax - 40.0, Y - L.cheekY, 16.0, 13.0);
+  h += 4.0 * bump(ax - 56.0, Y + 16.0, 11.0, 14.0);  // cheekbones widen the mid-face
   h += L.smileBulge * bump(ax - (L.mouthHalfWidth + 4.0), Y - (L.mouthY + 14.0), 9.0, 9.0);
   double along = 0.0;
   const double foldDistance = segmentDistance(ax, Y, L.alaX + 7.5, L.alaY + 1.0,
@@ -287,7 +288,7 @@ double HeadShape::faceRelief(double X, double Y) const {
   h += L.alaHeight * bump(ax - L.alaX, Y - L.alaY, 5.5, 5.0);
   const double alaRing = std::hypot(ax - L.alaX, Y - L.alaY);
   h -= 1.4 * std::exp(-sq((alaRing - 7.0) / 1.3)) * smoothstep(L.alaX - 2.0, L.alaX + 3.0, ax);
-  h -= 3.0 * bump(ax - L.nostrilX, Y - L.nostrilY, 3.4, 2.1);
+  h -= 3.0 * bump(ax - L.nostrilX, Y - L.nostrilY, 3.6, 2.3);
 
   // Philtrum ridges; the muzzle that carries the lips forward.
   const MouthField m = mouthField(L, X, Y);

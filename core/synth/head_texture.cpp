@@ -129,7 +129,7 @@ void Painter::paintNose(const SurfaceSample& s, Rgb& c) const {
   const double ax = std::abs(s.X);
   c *= 1.0 - 0.10 * std::exp(-sq((std::hypot(ax - L_.alaX, s.Y - L_.alaY) - 7.0) / 1.0)) *
                  smoothstep(L_.alaX - 2.0, L_.alaX + 3.0, ax);
-  const double nostril = bump(ax - L_.nostrilX, s.Y - L_.nostrilY, 3.1, 1.9);
+  const double nostril = bump(ax - L_.nostrilX, s.Y - L_.nostrilY, 3.3, 2.1);
   c = mixRgb(c, Rgb(0.10, 0.05, 0.04), smoothstep(0.3, 0.65, nostril));
   // Shadowed hollows between the bridge and the eyes, and the crease at the nasal root.
   c *= 1.0 - 0.14 * bump(ax - 9.5, s.Y + 1.0, 3.5, 6.0);
@@ -146,7 +146,7 @@ void Painter::paintMouth(const SurfaceSample& s, Rgb& c) const {
   const double ax = std::abs(s.X);
   if (m.width > 0.0) {
     const double r = id_.lipRedness;
-    Rgb lip(c.x() * 0.86, c.y() * (0.60 - 0.12 * r), c.z() * (0.62 - 0.10 * r));
+    Rgb lip(c.x() * (0.80 + 0.06 * r), c.y() * (0.62 - 0.14 * r), c.z() * (0.66 - 0.12 * r));
     lip *= 1.0 + 0.05 * noise_(s.X * 2.5 + 700.0, s.Y * 0.35, 1.0);
     const double lowerSpan = std::max(m.lowerTop - m.lowerBottom, 1e-6);
     const double w = (m.lowerTop - s.Y) / lowerSpan;
@@ -159,10 +159,11 @@ void Painter::paintMouth(const SurfaceSample& s, Rgb& c) const {
       Rgb inside(0.13, 0.04, 0.05);
       const double toothTop = m.upperBottom;
       if (s.Y > toothTop - 5.5 && std::abs(m.t) < 0.8) {
-        const double gap = std::exp(-sq(std::remainder(ax, 8.5) / 0.35));
-        Rgb tooth = Rgb(0.88, 0.86, 0.78) * (1.0 - 0.5 * gap);
-        const double edge = smoothstep(toothTop - 5.5, toothTop - 4.5, s.Y);
-        inside = mixRgb(inside, tooth, edge * smoothstep(0.8, 0.6, std::abs(m.t)));
+        // Upper incisors: a light band under the upper lip with soft gaps between the teeth.
+        const double gap = std::exp(-sq(std::remainder(ax, 8.5) / 0.5));
+        const Rgb tooth = Rgb(0.86, 0.84, 0.76) * (1.0 - 0.25 * gap);
+        const double band = smoothstep(toothTop - 5.5, toothTop - 4.0, s.Y);
+        inside = mixRgb(inside, tooth, band * smoothstep(0.8, 0.55, std::abs(m.t)));
       }
       c = mixRgb(c, inside, m.interior);
     }
