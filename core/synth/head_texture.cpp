@@ -1,8 +1,10 @@
 #include "core/synth/head_texture.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
+#include <thread>
 #include <vector>
 
 #include "core/synth/synth_math.hpp"
@@ -228,7 +230,7 @@ cv::Mat paintHeadTexture(const HeadShape& head, const EarShape& ear, const Angle
       px[2 - k] = static_cast<unsigned char>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255.0));
     }
   };
-  for (int row = 0; row < size; ++row) {
+  const auto paintRow = [&](int row) {
     const double v = 1.0 - (row + 0.5) / size;
     if (v >= 0.25) {
       const double a = phi.angle((v - kHeadChartBottom) / (1.0 - kHeadChartBottom));
@@ -244,7 +246,18 @@ cv::Mat paintHeadTexture(const HeadShape& head, const EarShape& ear, const Angle
         store(row, col, painter.ear(rho, psi, lateral));
       }
     }
-  }
+  };
+  // Texels are independent, so rows are shared among a few threads (the result does not depend
+  // on how many).
+  const int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1U, 4U));
+  std::atomic<int> next{0};
+  const auto work = [&] {
+    for (int row = next++; row < size; row = next++) paintRow(row);
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& thread : pool) thread.join();
   return texture;
 }
 
