@@ -56,14 +56,15 @@ struct RenderedView {
 RenderedView renderView(OffscreenRenderer& renderer, const SynthHead& head, const View& view,
                         int size, const fs::path& stem) {
   const Scheme& scheme = Scheme::thesis25();
+  // Frame the face, not the whole head: the landmarks (earlobes included) span ~85% of the image.
+  const Eigen::Matrix3Xd points = head.landmarks.matrix();
+  const Eigen::Vector3d centroid = points.rowwise().mean();
+  const double radius = (points.colwise() - centroid).colwise().norm().maxCoeff();
   Camera camera = Camera::fromVerticalFov(size, size, 30.0);
-  double radius = 0.0;
-  for (const auto& p : head.mesh.positions)
-    radius = std::max(radius, static_cast<double>(p.norm()));
   Pose pose = Pose::fromDegrees(view.pitch, view.yaw, 0.0);
-  pose.translation.z() = distanceToFit(radius, camera, 0.95);
-  camera = Camera::fromVerticalFov(size, size, 30.0, -pose.translation.z() - radius - 10.0,
-                                   -pose.translation.z() + radius + 10.0);
+  pose.translation = -(pose.rotation() * centroid);
+  pose.translation.z() += distanceToFit(radius, camera, 0.85);
+  camera = Camera::fromVerticalFov(size, size, 30.0, 10.0, -pose.translation.z() + 400.0);
   const RenderResult result = renderer.render(pose, camera);
 
   LandmarkSet projected(head.landmarks.size(), 2);
@@ -144,8 +145,10 @@ void runDemo(const DemoArgs& args) {
         rendered[static_cast<std::size_t>(job)] =
             renderView(*renderer, heads[static_cast<std::size_t>(head)], view, args.size, stem);
         const int finished = ++done;
-        std::lock_guard lock(errorMutex);
-        std::cerr << "\rdemo: rendered " << finished << "/" << jobs << " views" << std::flush;
+        if (finished * 10 / jobs != (finished - 1) * 10 / jobs) {
+          std::lock_guard lock(errorMutex);
+          std::cerr << "demo: rendered " << finished << "/" << jobs << " views\n";
+        }
       }
     } catch (...) {
       std::lock_guard lock(errorMutex);
@@ -156,7 +159,6 @@ void runDemo(const DemoArgs& args) {
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto& thread : pool) thread.join();
-  std::cerr << '\n';
   if (error) std::rethrow_exception(error);
   const double renderSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
@@ -167,8 +169,8 @@ void runDemo(const DemoArgs& args) {
     tiles.push_back(rendered[static_cast<std::size_t>(job)].overlay);
     const View& view = views[static_cast<std::size_t>(job) % views.size()];
     std::ostringstream caption;
-    caption << "head " << job / static_cast<int>(views.size()) + 1 << "  yaw " << view.yaw
-            << " pitch " << view.pitch;
+    caption << "head " << job / static_cast<int>(views.size()) + 1 << ": yaw " << view.yaw
+            << ", pitch " << view.pitch;
     captions.push_back(caption.str());
   }
   const fs::path sheet = args.out / "training-views.png";

@@ -35,7 +35,11 @@ cv::Mat makeContactSheet(const std::vector<cv::Mat>& tiles, int columns,
   const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
   const int cellHeight = tile.height + captionHeight;
   cv::Mat sheet(rows * cellHeight, columns * tile.width, CV_8UC3, background);
-  const double fontScale = std::max(0.3, captionHeight / 30.0);
+  // Fit the longest caption to the tile width.
+  std::size_t longest = 1;
+  for (const auto& caption : captions) longest = std::max(longest, caption.size());
+  const double fontScale =
+      std::clamp(std::min(captionHeight / 30.0, (tile.width - 8) / (18.0 * longest)), 0.25, 1.0);
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     if (tiles[i].size() != tile) throw Error("contact sheet: images differ in size");
     const int col = static_cast<int>(i) % columns;
