@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh/mesh_distance.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/textured_mesh.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
@@ -54,40 +55,6 @@ std::filesystem::path jamesFixture() {
 }
 std::filesystem::path ictFixture() {
   return test::fixturePath("ict-facekit/thesis25_vertices.json");
-}
-
-// Distance from p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-double pointTriangleDistance(const Vector3d& p, const Vector3d& a, const Vector3d& b,
-                             const Vector3d& c) {
-  const Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return (p - a).norm();
-  const Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return (p - b).norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + ab * (d1 / (d1 - d3)))).norm();
-  const Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return (p - c).norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + ac * (d2 / (d2 - d6)))).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
-}
-
-double distanceToMesh(const Vector3d& p, const TexturedMesh& mesh) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& t : mesh.triangles) {
-    best = std::min(best, pointTriangleDistance(p, mesh.positions[t[0]].cast<double>(),
-                                                mesh.positions[t[1]].cast<double>(),
-                                                mesh.positions[t[2]].cast<double>()));
-  }
-  return best;
 }
 
 // A mid-sagittal plane fitted to mirror pairs: unit normal towards the subject's left (mean of
@@ -129,7 +96,9 @@ std::vector<Vector3d> toVector(const LandmarkSet& set) {
 // james (menpo3d's scan): millimetres, +x = subject's left, +y up, +z out of the face; the face
 // is turned about 6 degrees towards the subject's right (README in the fixture folder).
 
-LandmarkSet readJames() { return readLandmarks(jamesFixture(), &Scheme::thesis25()); }
+LandmarkSet readJames() {
+  return readLandmarks(jamesFixture(), &Scheme::thesis25());
+}
 
 TEST(JamesAnnotation, HasAll25Points3D) {
   const auto points = readJames();
@@ -169,7 +138,8 @@ TEST(JamesAnnotation, PointsLieOnTheMeshSurface) {
   ASSERT_GT(mesh.bounds().sizes().maxCoeff(), 100.0f) << "james should be in millimetres";
   const auto p = toVector(readJames());
   for (int i = 0; i < kPoints; ++i) {
-    EXPECT_LT(distanceToMesh(p[i], mesh), 1.0) << "thesis point " << i << " is off the surface";
+    EXPECT_LT(nearestSurfacePoint(mesh, p[i]).distance, 1.0)
+        << "thesis point " << i << " is off the surface";
   }
 }
 
@@ -212,7 +182,7 @@ TEST(JamesAnnotation, AgreesWithTheIbug68Conversion) {
 // +y up, +z out of the face, symmetric about x = 0).
 
 constexpr int kIctVertexCount = 26719;
-constexpr int kIctFaceAreaEnd = 9409;  // face area [0, 9408]
+constexpr int kIctFaceAreaEnd = 9409;                             // face area [0, 9408]
 constexpr std::pair<int, int> kIctLeftEyeball = {21451, 23021};   // [first, end)
 constexpr std::pair<int, int> kIctRightEyeball = {23021, 24591};  // [first, end)
 

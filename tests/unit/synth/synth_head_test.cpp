@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "core/common/error.hpp"
+#include "core/mesh/mesh_distance.hpp"
 #include "core/scheme/scheme.hpp"
 #include "tests/support/test_support.hpp"
 
@@ -24,45 +25,6 @@ SynthOptions quick() {
   o.faceStepDegrees = 1.5;
   o.textureSize = 256;
   return o;
-}
-
-// Distance from p to the triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
-double pointTriangleDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                             const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return (p - a).norm();
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return (p - b).norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + ab * (d1 / (d1 - d3)))).norm();
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return (p - c).norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + ac * (d2 / (d2 - d6)))).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
-}
-
-double distanceToMesh(const TexturedMesh& mesh, const Eigen::Vector3d& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3d a = mesh.positions[static_cast<std::size_t>(t.x())].cast<double>();
-    const Eigen::Vector3d b = mesh.positions[static_cast<std::size_t>(t.y())].cast<double>();
-    const Eigen::Vector3d c = mesh.positions[static_cast<std::size_t>(t.z())].cast<double>();
-    // Cheap rejection: the triangle's bounding sphere is farther than the best so far.
-    const Eigen::Vector3d centre = (a + b + c) / 3.0;
-    const double radius = std::max({(a - centre).norm(), (b - centre).norm(), (c - centre).norm()});
-    if ((p - centre).norm() - radius > best) continue;
-    best = std::min(best, pointTriangleDistance(p, a, b, c));
-  }
-  return best;
 }
 
 double interOcular(const LandmarkSet& l) {
@@ -163,7 +125,7 @@ TEST(SynthHead, LandmarksLieOnTheMeshSurface) {
     ASSERT_EQ(head.landmarks.dims(), 3);
     EXPECT_EQ(head.landmarks.point(0), Eigen::Vector3d::Zero());
     for (int i = 0; i < 25; ++i) {
-      EXPECT_LT(distanceToMesh(head.mesh, head.landmarks.point(i)), 0.5)
+      EXPECT_LT(nearestSurfacePoint(head.mesh, head.landmarks.point(i)).distance, 0.5)
           << expression << " landmark " << i + 1 << " (" << Scheme::thesis25().id(i) << ")";
     }
   }
