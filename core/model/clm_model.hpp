@@ -1,0 +1,41 @@
+// A trained clm3d model: the scheme it was trained for, the shape model, every view's texture
+// models (per scale), training settings and provenance. What `clm3d train` writes, `clm3d info`
+// summarises and the fitter loads (file format: model_file.hpp, docs/model-file.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/model/shape_model.hpp"
+#include "core/model/texture_model.hpp"
+
+namespace clm3d {
+
+struct ModelProvenance {
+  std::string dataset;      // the manifest the model was trained from
+  std::string created;      // ISO 8601 UTC, e.g. 2024-05-01T12:00:00Z
+  std::string toolVersion;  // clm3d version that trained it
+  std::uint64_t seed = 0;   // training random seed
+  std::string notes;
+};
+
+struct ClmModel {
+  std::string schemeJson;  // the scheme file text (Scheme::fromJson(schemeJson, ...))
+  ShapeModel shape;
+  std::vector<ViewModel> views;  // 15 for the multi-view model; 1 (frontal) for the baseline
+  bool singleView = false;
+  double patchRatio = 0.24;  // patchSize / inter-ocular distance (pixels) at the finest scale
+  std::string settingsJson;  // the training settings, as JSON (an object, or empty)
+  ModelProvenance provenance;
+
+  // The scheme, parsed from schemeJson (throws InputError if it does not parse).
+  Scheme scheme() const;
+  // Throws Error describing the first inconsistency: "field views[3].scales[1].pca: ..." (sizes
+  // vs scheme, visible vs landmarks, PCA dimensions, orthonormality, non-finite values...).
+  void validate() const;
+  // The view whose centre is nearest to (pitch, yaw) in degrees; -1 if there are no views.
+  int nearestView(double pitchDeg, double yawDeg) const;
+};
+
+}  // namespace clm3d

@@ -1,0 +1,33 @@
+// The .clm3d model file: one versioned binary file holding a whole ClmModel. Layout (byte by byte
+// in docs/model-file.md): magic "CLM3DMDL", u32 format version, u64 payload length, u32 CRC-32 of
+// the payload, then the payload = u64 JSON header length + JSON header (scheme, settings,
+// provenance, every array's shape) + little-endian float32/float64 arrays in header order.
+// Loading checks every length before allocating and validates the model; any failure is an
+// InputError naming the file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "core/model/clm_model.hpp"
+
+namespace clm3d {
+
+inline constexpr std::uint32_t kModelFormatVersion = 1;
+
+// Serialises the model (validate()s it first; throws Error if it is inconsistent).
+std::string serializeModel(const ClmModel& model);
+// Writes atomically (writeFileAtomically); InputError naming the file if it cannot be written.
+void saveModel(const ClmModel& model, const std::filesystem::path& path);
+// InputError "FILE: ..." for: not a clm3d model, newer format version, truncated, corrupt
+// (checksum mismatch), malformed header, inconsistent sizes (names the field).
+ClmModel loadModel(const std::filesystem::path& path);
+// What loadModel and the fuzzer call; sourceName names the input in errors.
+ClmModel parseModel(std::string_view bytes, const std::string& sourceName);
+
+// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), as in zlib/PNG.
+std::uint32_t crc32(std::string_view bytes);
+
+}  // namespace clm3d
