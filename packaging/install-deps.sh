@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   libassimp-dev libosmesa6-dev libegl-dev
+  libarchive-dev
   libopencv-dev opencv-data
   libdlib-dev libdlib-data libblas-dev liblapack-dev
   qtbase5-dev libqt5charts5-dev libqt5svg5-dev

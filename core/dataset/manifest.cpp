@@ -1,0 +1,334 @@
+#include "core/dataset/manifest.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/common/error.hpp"
+#include "core/dataset/axis_name.hpp"
+#include "core/dataset/seed_list.hpp"
+#include "core/scheme/scheme.hpp"
+#include "core/synth/head_identity.hpp"
+#include "core/synth/synth_head.hpp"
+
+namespace clm3d {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// Reads the fields of one JSON object, naming each by its path ("scans[2].mesh") in errors, and
+// rejects fields it does not know (a typo must not silently fall back to a default).
+class Fields {
+ public:
+  Fields(const json& object, std::string path, const fs::path& file, const fs::path& folder)
+      : object_(object), path_(std::move(path)), file_(file), folder_(folder) {
+    if (!object_.is_object()) fail(path_.empty() ? "the manifest" : path_, "expected an object");
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throwInputError(file_, "field " + field + ": " + what);
+  }
+  std::string name(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key) {
+    known_.insert(key);
+    return object_.contains(key);
+  }
+  const json& at(const std::string& key) {
+    if (!has(key)) fail(name(key), "missing (required)");
+    return object_.at(key);
+  }
+
+  std::string string(const std::string& key, const std::string& fallback, bool required = false) {
+    if (!required && !has(key)) return fallback;
+    const json& v = at(key);
+    if (!v.is_string()) fail(name(key), "expected a string, got " + std::string(v.type_name()));
+    std::string s = v.get<std::string>();
+    if (s.empty()) fail(name(key), "must not be empty");
+    return s;
+  }
+  std::string requiredString(const std::string& key) { return string(key, {}, true); }
+
+  long long integer(const std::string& key, long long fallback, long long lo, long long hi) {
+    if (!has(key)) return fallback;
+    const json& v = object_.at(key);
+    if (!v.is_number_integer()) {
+      fail(name(key), "expected an integer, got " + std::string(v.type_name()));
+    }
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
+      fail(name(key), "must be at most " + std::to_string(hi));
+    }
+    const long long x = v.get<long long>();
+    if (x < lo || x > hi) {
+      fail(name(key), "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                          std::to_string(x));
+    }
+    return x;
+  }
+  std::uint64_t unsignedInteger(const std::string& key, std::uint64_t fallback) {
+    if (!has(key)) return fallback;
+    const json& v = object_.at(key);
+    if (!v.is_number_unsigned()) fail(name(key), "expected a non-negative integer");
+    return v.get<std::uint64_t>();
+  }
+  double number(const std::string& key, double fallback, double lo, double hi) {
+    if (!has(key)) return fallback;
+    const json& v = object_.at(key);
+    if (!v.is_number()) fail(name(key), "expected a number, got " + std::string(v.type_name()));
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < lo || x > hi) {
+      std::ostringstream s;
+      s << "must be in [" << lo << ", " << hi << "], got " << x;
+      fail(name(key), s.str());
+    }
+    return x;
+  }
+  bool boolean(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    const json& v = object_.at(key);
+    if (!v.is_boolean())
+      fail(name(key), "expected true or false, got " + std::string(v.type_name()));
+    return v.get<bool>();
+  }
+  std::vector<std::string> strings(const std::string& key, std::vector<std::string> fallback) {
+    if (!has(key)) return fallback;
+    const json& v = object_.at(key);
+    if (!v.is_array()) fail(name(key), "expected an array of strings");
+    std::vector<std::string> out;
+    std::set<std::string> seen;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string item = name(key) + "[" + std::to_string(i) + "]";
+      if (!v[i].is_string()) fail(item, "expected a string, got " + std::string(v[i].type_name()));
+      std::string s = v[i].get<std::string>();
+      if (s.empty()) fail(item, "must not be empty");
+      if (!seen.insert(s).second) fail(item, "'" + s + "' is listed twice");
+      out.push_back(std::move(s));
+    }
+    return out;
+  }
+  // A path relative to the manifest's folder (or absolute), made absolute; must exist.
+  fs::path path(const std::string& key, bool directoryAllowed = false) {
+    const fs::path p = (folder_ / fs::path(requiredString(key))).lexically_normal();
+    std::error_code ec;
+    const auto status = fs::status(p, ec);
+    if (!fs::exists(status)) fail(name(key), "file not found: " + p.string());
+    if (!fs::is_regular_file(status) && !(directoryAllowed && fs::is_directory(status))) {
+      fail(name(key), "not a file: " + p.string());
+    }
+    return p;
+  }
+  // After all reads: any other key is an error.
+  void rejectUnknown() const {
+    for (const auto& [key, value] : object_.items()) {
+      if (!known_.count(key)) fail(name(key), "unknown field");
+    }
+  }
+
+ private:
+  const json& object_;
+  std::string path_;
+  fs::path file_;
+  fs::path folder_;
+  std::set<std::string> known_;
+};
+
+const json& arrayField(Fields& fields, const std::string& key) {
+  static const json empty = json::array();
+  if (!fields.has(key)) return empty;
+  const json& v = fields.at(key);
+  if (!v.is_array()) fields.fail(key, "expected an array, got " + std::string(v.type_name()));
+  return v;
+}
+
+void checkNameSegment(Fields& f, const std::string& key, const std::string& value) {
+  if (value.find('/') != std::string::npos) f.fail(f.name(key), "must not contain '/'");
+}
+
+ScanSource parseScan(Fields& f) {
+  ScanSource scan;
+  scan.mesh = f.path("mesh");
+  scan.landmarks = f.path("landmarks");
+  scan.subject = f.requiredString("subject");
+  checkNameSegment(f, "subject", scan.subject);
+  scan.expression = f.string("expression", "neutral");
+  checkNameSegment(f, "expression", scan.expression);
+  scan.up = f.string("up", scan.up);
+  scan.front = f.string("front", scan.front);
+  const auto up = axisFromName(scan.up);
+  const auto front = axisFromName(scan.front);
+  if (!up) f.fail(f.name("up"), "expected an axis such as +y, -z or x, got '" + scan.up + "'");
+  if (!front) {
+    f.fail(f.name("front"), "expected an axis such as +y, -z or x, got '" + scan.front + "'");
+  }
+  if (up->dot(*front) != 0.0) f.fail(f.name("front"), "must be perpendicular to up");
+  scan.levelEyes = f.boolean("level_eyes", scan.levelEyes);
+  return scan;
+}
+
+ProceduralSource parseProcedural(Fields& f) {
+  ProceduralSource source;
+  const json& seeds = f.at("seeds");
+  try {
+    if (seeds.is_string()) {
+      source.seeds = parseSeedList(seeds.get<std::string>());
+    } else if (seeds.is_array() && !seeds.empty()) {
+      std::set<std::uint64_t> seen;
+      for (std::size_t i = 0; i < seeds.size(); ++i) {
+        if (!seeds[i].is_number_unsigned()) {
+          f.fail(f.name("seeds") + "[" + std::to_string(i) + "]",
+                 "expected a non-negative integer");
+        }
+        const auto seed = seeds[i].get<std::uint64_t>();
+        if (!seen.insert(seed).second) {
+          throw std::invalid_argument("seed " + std::to_string(seed) + " is listed twice");
+        }
+        source.seeds.push_back(seed);
+      }
+    } else {
+      f.fail(f.name("seeds"),
+             "expected a seed list such as \"1-10\" or \"1,4,7\", or a non-empty array of seeds");
+    }
+  } catch (const std::invalid_argument& e) {
+    f.fail(f.name("seeds"), e.what());
+  }
+  source.expressions = f.strings("expressions", {"neutral"});
+  if (source.expressions.empty()) f.fail(f.name("expressions"), "must not be empty");
+  for (std::size_t i = 0; i < source.expressions.size(); ++i) {
+    try {
+      (void)Expression::preset(source.expressions[i]);
+    } catch (const InputError& e) {
+      f.fail(f.name("expressions") + "[" + std::to_string(i) + "]", e.what());
+    }
+  }
+  source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 1, 1 << 20));
+  source.faceStepDegrees = f.number("face_step_degrees", source.faceStepDegrees, 0.0, 360.0);
+  SynthOptions options;
+  options.textureSize = source.textureSize;
+  options.faceStepDegrees = source.faceStepDegrees;
+  try {
+    options.validate();
+  } catch (const InputError& e) {
+    f.fail(f.name("texture_size/face_step_degrees"), e.what());
+  }
+  return source;
+}
+
+IctSource parseIct(Fields& f) {
+  IctSource source;
+  source.model = f.path("model", /*directoryAllowed=*/true);
+  source.vertices = f.path("vertices");
+  source.identities = static_cast<int>(f.integer("identities", source.identities, 1, 100000));
+  source.expressions = f.strings("expressions", {});
+  source.expressionsPerSample =
+      static_cast<int>(f.integer("expressions_per_sample", source.expressionsPerSample, 0, 1000));
+  if (!source.expressions.empty() &&
+      source.expressionsPerSample > static_cast<int>(source.expressions.size())) {
+    f.fail(f.name("expressions_per_sample"), "is more than the number of expressions listed");
+  }
+  source.identityWeightSd = f.number("identity_weight_sd", source.identityWeightSd, 0.0, 10.0);
+  source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
+  return source;
+}
+
+}  // namespace
+
+std::string scanSubjectId(const ScanSource& scan) {
+  return scan.subject + "/" + scan.expression;
+}
+
+std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression) {
+  return "procedural/" + std::to_string(seed) + "/" + expression;
+}
+
+DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    const auto bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    throwInputError(file, "not valid JSON: " + what);
+  }
+  const fs::path folder = fs::absolute(file).parent_path();
+  Fields top(root, "", file, folder);
+  DatasetManifest manifest;
+  manifest.file = file;
+
+  if (!top.has("version")) top.fail("version", "missing (required; this program reads version 1)");
+  if (top.integer("version", 0, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()) !=
+      1) {
+    top.fail("version", "unsupported (this program reads version 1)");
+  }
+  manifest.name = top.string("name", file.stem().string());
+
+  const std::string scheme = top.string("scheme", manifest.scheme);
+  if (scheme == "thesis25" || scheme == "ibug68") {
+    manifest.scheme = scheme;
+  } else {
+    manifest.scheme = top.path("scheme").string();
+    (void)Scheme::load(manifest.scheme);  // validates it; errors name the scheme file
+  }
+  const Scheme schemeObject = Scheme::byNameOrPath(manifest.scheme);
+
+  std::map<std::string, std::string> ids;  // subject id -> field that defined it
+  auto addId = [&](const std::string& id, const std::string& field) {
+    const auto [it, inserted] = ids.emplace(id, field);
+    if (!inserted) top.fail(field, "subject '" + id + "' is already defined by " + it->second);
+  };
+
+  const json& scans = arrayField(top, "scans");
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    Fields f(scans[i], "scans[" + std::to_string(i) + "]", file, folder);
+    manifest.scans.push_back(parseScan(f));
+    f.rejectUnknown();
+    addId(scanSubjectId(manifest.scans.back()), f.name("subject"));
+  }
+
+  const json& procedural = arrayField(top, "procedural");
+  for (std::size_t i = 0; i < procedural.size(); ++i) {
+    Fields f(procedural[i], "procedural[" + std::to_string(i) + "]", file, folder);
+    manifest.procedural.push_back(parseProcedural(f));
+    f.rejectUnknown();
+    if (schemeObject.name() != "thesis25") {
+      f.fail(f.name("seeds"), "procedural heads have thesis25 landmarks but the scheme is '" +
+                                  schemeObject.name() + "'");
+    }
+    for (const auto seed : manifest.procedural.back().seeds) {
+      for (const auto& expression : manifest.procedural.back().expressions) {
+        addId(proceduralSubjectId(seed, expression), f.name("seeds"));
+      }
+    }
+  }
+
+  const json& ict = arrayField(top, "ict_facekit");
+  for (std::size_t i = 0; i < ict.size(); ++i) {
+    Fields f(ict[i], "ict_facekit[" + std::to_string(i) + "]", file, folder);
+    manifest.ict.push_back(parseIct(f));
+    f.rejectUnknown();
+  }
+  top.rejectUnknown();
+
+  if (manifest.scans.empty() && manifest.procedural.empty() && manifest.ict.empty()) {
+    top.fail("scans/procedural/ict_facekit", "the manifest lists no data");
+  }
+  return manifest;
+}
+
+DatasetManifest loadManifest(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::error_code ec;
+    throwInputError(path, fs::exists(path, ec) ? "cannot read the file" : "file not found");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseManifest(text.str(), path);
+}
+
+}  // namespace clm3d

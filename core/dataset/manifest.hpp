@@ -1,0 +1,64 @@
+// The dataset manifest: one JSON file (format in docs/dataset.md) listing what a model is trained
+// from - textured scans with their landmark files, procedural heads (seeds x expressions) and
+// shape-only sources (the ICT-FaceKit morphable model) - so that a training run is reproducible
+// from one file. Paths in the file are relative to the file's folder.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace clm3d {
+
+// A textured 3D scan and its landmarks (any format readLandmarks reads, 3D; 68-point iBUG files
+// are converted when the scheme is thesis25).
+struct ScanSource {
+  std::filesystem::path mesh, landmarks;  // absolute
+  std::string subject, expression;        // expression defaults to "neutral"
+  std::string up = "+y", front = "+z";    // the file's up and out-of-the-face axes
+  bool levelEyes = true;                  // turn so that the eye centres are level (yaw/roll 0)
+};
+
+// Procedural heads (core/synth): every seed with every expression preset.
+struct ProceduralSource {
+  std::vector<std::uint64_t> seeds;
+  std::vector<std::string> expressions;  // each seed rendered with each expression
+  int textureSize = 1024;
+  double faceStepDegrees = 1.0;
+};
+
+// Shape-only landmark sets sampled from the ICT-FaceKit morphable model.
+struct IctSource {
+  std::filesystem::path model;     // the .tar.xz (any archive libarchive reads) or a folder of OBJs
+  std::filesystem::path vertices;  // thesis25_vertices.json: the vertex index of each landmark
+  int identities = 50;             // number of samples (each a random identity)
+  std::vector<std::string> expressions;  // blendshape names to draw from; empty = all
+  int expressionsPerSample = 2;          // distinct blendshapes per sample, weights in [0, 1]
+  double identityWeightSd = 1.0;         // standard deviation of the identity weights
+  std::uint64_t seedOffset = 0;          // added to the sampling seed
+};
+
+struct DatasetManifest {
+  std::filesystem::path file;       // where it was read from (for messages)
+  std::string scheme = "thesis25";  // built-in name or an absolute path to a scheme JSON
+  std::vector<ScanSource> scans;
+  std::vector<ProceduralSource> procedural;
+  std::vector<IctSource> ict;
+  std::string name;  // for provenance; defaults to the file's stem
+};
+
+// Ids of the textured subjects a manifest yields: "SUBJECT/EXPRESSION" for a scan,
+// "procedural/SEED/EXPRESSION" for a procedural head. Unique within a manifest.
+std::string scanSubjectId(const ScanSource& scan);
+std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression);
+
+// Reads and validates a manifest: every field's type and range, that the referenced files exist,
+// expression presets and seed lists. Paths relative to the manifest's folder become absolute.
+// Throws InputError "FILE: field scans[2].landmarks: file not found: PATH" and the like.
+DatasetManifest loadManifest(const std::filesystem::path& path);
+
+// Parses a manifest from text; `file` names it in errors and its folder resolves relative paths.
+DatasetManifest parseManifest(const std::string& text, const std::filesystem::path& file);
+
+}  // namespace clm3d

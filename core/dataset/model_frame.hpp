@@ -1,0 +1,31 @@
+// Bringing landmark-annotated 3D data into model coordinates the same way for every source (a
+// scan, an ICT-FaceKit sample): the rotation from the file's axes, optionally levelled on the eye
+// centres, and the translation that puts landmark 1 at the origin.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include "core/scheme/landmark_set.hpp"
+#include "core/scheme/scheme.hpp"
+
+namespace clm3d {
+
+struct ModelFrame {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // file coordinates of the new origin
+  Eigen::Vector3d apply(const Eigen::Vector3d& p) const { return rotation * (p - origin); }
+};
+
+// The frame for 3D landmarks of `scheme` (thesis25 or ibug68 give the eye centres and landmark 1;
+// for other schemes the origin is point 0 and levelling is not available). On failure returns
+// nullopt and sets `why` to the reason (the caller names the file).
+std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme& scheme,
+                                     const Eigen::Vector3d& up, const Eigen::Vector3d& front,
+                                     bool levelEyes, std::string& why);
+
+// Every present point through frame.apply.
+LandmarkSet applyFrame(const ModelFrame& frame, const LandmarkSet& landmarks);
+
+}  // namespace clm3d

@@ -1,0 +1,124 @@
+#include "core/dataset/training_subjects.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+#include "core/common/error.hpp"
+#include "core/dataset/axis_name.hpp"
+#include "core/dataset/model_frame.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/mesh/mesh_transform.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/scheme/scheme.hpp"
+#include "core/synth/synth_head.hpp"
+
+namespace clm3d {
+namespace {
+
+TexturedSubject loadScan(const ScanSource& scan, const Scheme& scheme) {
+  TexturedSubject subject;
+  subject.id = scanSubjectId(scan);
+  subject.subject = scan.subject;
+  subject.expression = scan.expression;
+  LandmarkSet landmarks = readLandmarks(scan.landmarks, &scheme);
+  const auto up = axisFromName(scan.up);
+  const auto front = axisFromName(scan.front);
+  if (!up || !front) throw InputError("scan " + subject.id + ": bad up/front axis");
+  std::string why;
+  const auto frame = modelFrame(landmarks, scheme, *up, *front, scan.levelEyes, why);
+  if (!frame) throwInputError(scan.landmarks, why);
+  subject.mesh = loadTexturedMesh(scan.mesh);
+  transformMesh(subject.mesh, frame->rotation, -(frame->rotation * frame->origin));
+  subject.landmarks = applyFrame(*frame, landmarks);
+  return subject;
+}
+
+TexturedSubject makeProcedural(std::uint64_t seed, const std::string& expression,
+                               const ProceduralSource& source) {
+  SynthOptions options;
+  options.textureSize = source.textureSize;
+  options.faceStepDegrees = source.faceStepDegrees;
+  SynthHead head = generateHead(seed, Expression::preset(expression), options);
+  TexturedSubject subject;
+  subject.id = proceduralSubjectId(seed, expression);
+  subject.subject = "procedural/" + std::to_string(seed);
+  subject.expression = expression;
+  subject.mesh = std::move(head.mesh);
+  subject.landmarks = std::move(head.landmarks);
+  return subject;
+}
+
+// Runs jobs[i] into results[i] on up to `threads` threads; rethrows the error of the lowest failed
+// index (so which error is reported does not depend on timing), or Cancelled.
+void runJobs(const std::vector<std::function<TexturedSubject()>>& jobs,
+             std::vector<TexturedSubject>& results, int threads, const ProgressCallback& progress,
+             const CancelToken* cancel) {
+  results.assign(jobs.size(), {});
+  std::vector<std::exception_ptr> errors(jobs.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex progressMutex;
+  std::size_t done = 0;
+  auto worker = [&] {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= jobs.size() || stop.load()) return;
+      if (cancel && cancel->cancelled()) {
+        stop = true;
+        return;
+      }
+      try {
+        results[i] = jobs[i]();
+      } catch (...) {
+        errors[i] = std::current_exception();
+        stop = true;
+        return;
+      }
+      if (progress) {
+        std::lock_guard lock(progressMutex);
+        ++done;
+        progress(static_cast<double>(done) / static_cast<double>(jobs.size()),
+                 "loading training subjects");
+      }
+    }
+  };
+  int count = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  count = std::clamp(count, 1, std::max(1, static_cast<int>(jobs.size())));
+  std::vector<std::jthread> pool;
+  for (int t = 1; t < count; ++t) pool.emplace_back(worker);
+  worker();
+  pool.clear();  // joins
+  for (const auto& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  if (cancel) cancel->throwIfCancelled();
+}
+
+}  // namespace
+
+std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifest, int threads,
+                                                  const ProgressCallback& progress,
+                                                  const CancelToken* cancel) {
+  const Scheme scheme = Scheme::byNameOrPath(manifest.scheme);
+  std::vector<std::function<TexturedSubject()>> jobs;
+  for (const ScanSource& scan : manifest.scans) {
+    jobs.emplace_back([&scan, &scheme] { return loadScan(scan, scheme); });
+  }
+  for (const ProceduralSource& source : manifest.procedural) {
+    for (const std::uint64_t seed : source.seeds) {
+      for (const std::string& expression : source.expressions) {
+        jobs.emplace_back(
+            [seed, &expression, &source] { return makeProcedural(seed, expression, source); });
+      }
+    }
+  }
+  std::vector<TexturedSubject> subjects;
+  runJobs(jobs, subjects, threads, progress, cancel);
+  return subjects;
+}
+
+}  // namespace clm3d
