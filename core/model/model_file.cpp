@@ -1,0 +1,411 @@
+#include "core/model/model_file.hpp"
+
+#include <array>
+#include <bit>
+#include <cstring>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/error.hpp"
+
+namespace clm3d {
+
+namespace {
+
+constexpr std::string_view kMagic = "CLM3DMDL";
+constexpr std::size_t kHeaderBytes = 8 + 4 + 8 + 4;
+// No model needs more: 15 views x 3 scales x 68 landmarks x 32^2 pixels x 500 modes is 3.1e9
+// bytes. The cap stops a corrupt header from asking for absurd allocations.
+constexpr std::uint64_t kMaxValues = 100'000'000;
+constexpr std::int64_t kMaxPoints = 10'000;
+constexpr std::int64_t kMaxViews = 1'000;
+constexpr std::int64_t kMaxScales = 16;
+constexpr std::int64_t kMaxPatchSize = 1'024;
+
+using nlohmann::json;
+
+// ---- little-endian encoding ----
+
+template <typename T>
+void appendLittleEndian(std::string& out, T value) {
+  for (std::size_t i = 0; i < sizeof(T); ++i) {
+    out.push_back(static_cast<char>(static_cast<unsigned char>(value >> (8 * i))));
+  }
+}
+
+template <typename Derived>
+void appendFloats(std::string& out, const Eigen::DenseBase<Derived>& values) {
+  using Scalar = typename Derived::Scalar;
+  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+  const auto evaluated = values.derived().eval();  // column-major storage order
+  for (Eigen::Index i = 0; i < evaluated.size(); ++i) {
+    appendLittleEndian(out, std::bit_cast<Bits>(evaluated.data()[i]));
+  }
+}
+
+// Reads from the payload; every read checks the remaining length first.
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
+  std::size_t remaining() const { return bytes_.size() - position_; }
+  template <typename T>
+  T read() {
+    require(sizeof(T));
+    T value = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i) {
+      value |= static_cast<T>(static_cast<T>(static_cast<unsigned char>(bytes_[position_ + i]))
+                              << (8 * i));
+    }
+    position_ += sizeof(T);
+    return value;
+  }
+  std::string_view take(std::size_t count) {
+    require(count);
+    const auto result = bytes_.substr(position_, count);
+    position_ += count;
+    return result;
+  }
+  template <typename Scalar>
+  void readInto(Scalar* destination, std::size_t count) {
+    using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+    require(count * sizeof(Scalar));
+    for (std::size_t i = 0; i < count; ++i) destination[i] = std::bit_cast<Scalar>(read<Bits>());
+  }
+
+ private:
+  void require(std::size_t count) const {
+    if (count > remaining()) throw Error("payload ends early");
+  }
+  std::string_view bytes_;
+  std::size_t position_ = 0;
+};
+
+// ---- header JSON ----
+
+json provenanceJson(const ModelProvenance& provenance) {
+  return {{"dataset", provenance.dataset},
+          {"created", provenance.created},
+          {"toolVersion", provenance.toolVersion},
+          {"seed", provenance.seed},
+          {"notes", provenance.notes}};
+}
+
+json headerJson(const ClmModel& model) {
+  json views = json::array();
+  for (const ViewModel& view : model.views) {
+    json scales = json::array();
+    for (const PatchModel& patch : view.scales) {
+      scales.push_back({{"patchSize", patch.patchSize},
+                        {"landmarks", patch.landmarks},
+                        {"modes", patch.pca.modeCount()}});
+    }
+    std::vector<int> visible;
+    for (const bool flag : view.visible) visible.push_back(flag ? 1 : 0);
+    views.push_back({{"pitch", view.pitchDeg},
+                     {"yaw", view.yawDeg},
+                     {"mirrored", view.mirrored},
+                     {"visible", visible},
+                     {"scales", scales}});
+  }
+  return {{"scheme", model.schemeJson},
+          {"settings", model.settingsJson},
+          {"provenance", provenanceJson(model.provenance)},
+          {"singleView", model.singleView},
+          {"patchRatio", model.patchRatio},
+          {"shape",
+           {{"dims", model.shape.dims},
+            {"points", model.shape.pointCount()},
+            {"modes", model.shape.modeCount()},
+            {"limitSd", model.shape.limitSd}}},
+          {"views", views}};
+}
+
+[[noreturn]] void fieldError(const std::string& field, const std::string& what) {
+  throw Error("field " + field + ": " + what);
+}
+
+const json& member(const json& object, const char* key, const std::string& field) {
+  if (!object.is_object()) fieldError(field, "not an object");
+  const auto it = object.find(key);
+  if (it == object.end()) fieldError(field + "." + key, "missing");
+  return *it;
+}
+
+std::int64_t integer(const json& object, const char* key, const std::string& field,
+                     std::int64_t min, std::int64_t max) {
+  const json& value = member(object, key, field);
+  const std::string name = field + "." + key;
+  if (!value.is_number_integer()) fieldError(name, "not an integer");
+  if (value.is_number_unsigned()) {
+    const auto u = value.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(max)) fieldError(name, "out of range");
+    return static_cast<std::int64_t>(u);
+  }
+  const auto v = value.get<std::int64_t>();
+  if (v < min || v > max) fieldError(name, "out of range");
+  return v;
+}
+
+double number(const json& object, const char* key, const std::string& field) {
+  const json& value = member(object, key, field);
+  if (!value.is_number()) fieldError(field + "." + key, "not a number");
+  return value.get<double>();
+}
+
+bool boolean(const json& object, const char* key, const std::string& field) {
+  const json& value = member(object, key, field);
+  if (!value.is_boolean()) fieldError(field + "." + key, "not true or false");
+  return value.get<bool>();
+}
+
+std::string text(const json& object, const char* key, const std::string& field) {
+  const json& value = member(object, key, field);
+  if (!value.is_string()) fieldError(field + "." + key, "not a string");
+  return value.get<std::string>();
+}
+
+const json& array(const json& object, const char* key, const std::string& field,
+                  std::size_t maxSize) {
+  const json& value = member(object, key, field);
+  if (!value.is_array()) fieldError(field + "." + key, "not an array");
+  if (value.size() > maxSize) fieldError(field + "." + key, "too many entries");
+  return value;
+}
+
+// Adds count values to the running total, refusing totals beyond kMaxValues.
+void addValues(std::uint64_t& total, std::uint64_t a, std::uint64_t b, const std::string& field) {
+  if (a > kMaxValues || b > kMaxValues || (b > 0 && a > kMaxValues / b) ||
+      total + a * b > kMaxValues) {
+    fieldError(field, "the model would hold more than 10^8 values");
+  }
+  total += a * b;
+}
+
+// The model skeleton from the header: every array sized (after checking the total against the
+// payload), no values yet.
+ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
+  ClmModel model;
+  model.schemeJson = text(header, "scheme", "header");
+  model.settingsJson = text(header, "settings", "header");
+  const json& provenance = member(header, "provenance", "header");
+  model.provenance.dataset = text(provenance, "dataset", "provenance");
+  model.provenance.created = text(provenance, "created", "provenance");
+  model.provenance.toolVersion = text(provenance, "toolVersion", "provenance");
+  model.provenance.notes = text(provenance, "notes", "provenance");
+  const json& seed = member(provenance, "seed", "provenance");
+  if (!seed.is_number_unsigned()) fieldError("provenance.seed", "not an unsigned integer");
+  model.provenance.seed = seed.get<std::uint64_t>();
+  model.singleView = boolean(header, "singleView", "header");
+  model.patchRatio = number(header, "patchRatio", "header");
+
+  // Size everything from the header first, checking the byte count before any allocation.
+  std::uint64_t doubles = 0;
+  std::uint64_t floats = 0;
+  const json& shape = member(header, "shape", "header");
+  const auto points = integer(shape, "points", "shape", 0, kMaxPoints);
+  const auto shapeModes = integer(shape, "modes", "shape", 0, 3 * kMaxPoints);
+  addValues(doubles, 3 * static_cast<std::uint64_t>(points),
+            1 + static_cast<std::uint64_t>(shapeModes), "shape");
+  addValues(doubles, static_cast<std::uint64_t>(shapeModes), 1, "shape");
+  const json& views = array(header, "views", "header", kMaxViews);
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const std::string field = "views[" + std::to_string(v) + "]";
+    const json& scales = array(views[v], "scales", field, kMaxScales);
+    for (std::size_t s = 0; s < scales.size(); ++s) {
+      const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
+      const auto patchSize = integer(scales[s], "patchSize", scaleField, 1, kMaxPatchSize);
+      const auto& landmarks =
+          array(scales[s], "landmarks", scaleField, static_cast<std::size_t>(kMaxPoints));
+      const std::uint64_t d = landmarks.size() * static_cast<std::uint64_t>(patchSize * patchSize);
+      const auto modes = integer(scales[s], "modes", scaleField, 0,
+                                 static_cast<std::int64_t>(std::min<std::uint64_t>(d, kMaxValues)));
+      addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scaleField);  // mean, alpha, P
+      addValues(floats, static_cast<std::uint64_t>(modes), 1, scaleField);
+    }
+  }
+  const std::uint64_t expected = 8 * doubles + 4 * floats;
+  if (expected != arrayBytes) {
+    throw Error("the header describes " + std::to_string(expected) +
+                " bytes of arrays, the payload holds " + std::to_string(arrayBytes));
+  }
+
+  model.shape.dims = static_cast<int>(integer(shape, "dims", "shape", 2, 3));
+  model.shape.limitSd = number(shape, "limitSd", "shape");
+  model.shape.meanShape.resize(3, points);
+  model.shape.modes.resize(3 * points, shapeModes);
+  model.shape.variances.resize(shapeModes);
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const std::string field = "views[" + std::to_string(v) + "]";
+    ViewModel view;
+    view.pitchDeg = number(views[v], "pitch", field);
+    view.yawDeg = number(views[v], "yaw", field);
+    view.mirrored = boolean(views[v], "mirrored", field);
+    const json& visible = array(views[v], "visible", field, static_cast<std::size_t>(kMaxPoints));
+    for (const json& flag : visible) {
+      if (!flag.is_number_integer() || (flag != 0 && flag != 1)) {
+        fieldError(field + ".visible", "entries must be 0 or 1");
+      }
+      view.visible.push_back(flag == 1);
+    }
+    const json& scales = member(views[v], "scales", field);
+    for (std::size_t s = 0; s < scales.size(); ++s) {
+      const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
+      PatchModel patch;
+      patch.patchSize =
+          static_cast<int>(integer(scales[s], "patchSize", scaleField, 1, kMaxPatchSize));
+      for (const json& landmark : member(scales[s], "landmarks", scaleField)) {
+        if (!landmark.is_number_integer() || landmark < 0 || landmark >= kMaxPoints) {
+          fieldError(scaleField + ".landmarks", "entries must be landmark indices");
+        }
+        patch.landmarks.push_back(landmark.get<int>());
+      }
+      const Eigen::Index pixels = Eigen::Index(patch.patchSize) * patch.patchSize;
+      const Eigen::Index d = Eigen::Index(patch.landmarks.size()) * pixels;
+      const auto modes = static_cast<Eigen::Index>(integer(scales[s], "modes", scaleField, 0, d));
+      patch.pca.mean.resize(d);
+      patch.pca.components.resize(d, modes);
+      patch.pca.variances.resize(modes);
+      patch.alpha.assign(patch.landmarks.size(), Eigen::VectorXf(pixels));
+      view.scales.push_back(std::move(patch));
+    }
+    model.views.push_back(std::move(view));
+  }
+  return model;
+}
+
+template <typename Derived>
+void readArray(Reader& reader, Eigen::PlainObjectBase<Derived>& destination) {
+  reader.readInto(destination.data(), static_cast<std::size_t>(destination.size()));
+}
+
+ClmModel parsePayload(std::string_view payload) {
+  Reader reader(payload);
+  const auto headerLength = reader.read<std::uint64_t>();
+  if (headerLength > reader.remaining()) throw Error("header length exceeds the payload");
+  const auto headerText = reader.take(static_cast<std::size_t>(headerLength));
+  const json header = json::parse(headerText, nullptr, false);
+  if (header.is_discarded() || !header.is_object()) throw Error("header is not a JSON object");
+
+  ClmModel model = skeletonFrom(header, reader.remaining());
+  readArray(reader, model.shape.meanShape);
+  readArray(reader, model.shape.modes);
+  readArray(reader, model.shape.variances);
+  for (ViewModel& view : model.views) {
+    for (PatchModel& patch : view.scales) {
+      readArray(reader, patch.pca.mean);
+      readArray(reader, patch.pca.components);
+      readArray(reader, patch.pca.variances);
+      for (Eigen::VectorXf& alpha : patch.alpha) readArray(reader, alpha);
+    }
+  }
+  model.validate();
+  return model;
+}
+
+}  // namespace
+
+std::uint32_t crc32(std::string_view bytes) {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> result{};
+    for (std::uint32_t i = 0; i < 256; ++i) {
+      std::uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      result[i] = c;
+    }
+    return result;
+  }();
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const char byte : bytes) {
+    crc = table[(crc ^ static_cast<unsigned char>(byte)) & 0xFFu] ^ (crc >> 8);
+  }
+  return crc ^ 0xFFFFFFFFu;
+}
+
+std::string serializeModel(const ClmModel& model) {
+  model.validate();
+  std::string headerText;
+  try {
+    headerText = headerJson(model).dump();
+  } catch (const json::exception& e) {
+    throw Error(std::string("model header: ") + e.what());
+  }
+  std::string payload;
+  appendLittleEndian(payload, static_cast<std::uint64_t>(headerText.size()));
+  payload += headerText;
+  appendFloats(payload, model.shape.meanShape);
+  appendFloats(payload, model.shape.modes);
+  appendFloats(payload, model.shape.variances);
+  for (const ViewModel& view : model.views) {
+    for (const PatchModel& patch : view.scales) {
+      appendFloats(payload, patch.pca.mean);
+      appendFloats(payload, patch.pca.components);
+      appendFloats(payload, patch.pca.variances);
+      for (const Eigen::VectorXf& alpha : patch.alpha) appendFloats(payload, alpha);
+    }
+  }
+  std::string file(kMagic);
+  appendLittleEndian(file, kModelFormatVersion);
+  appendLittleEndian(file, static_cast<std::uint64_t>(payload.size()));
+  appendLittleEndian(file, crc32(payload));
+  file += payload;
+  return file;
+}
+
+void saveModel(const ClmModel& model, const std::filesystem::path& path) {
+  const std::string bytes = serializeModel(model);
+  writeBytesAtomically(
+      path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+}
+
+ClmModel loadModel(const std::filesystem::path& path) {
+  return parseModel(readTextFile(path), path.string());
+}
+
+ClmModel parseModel(std::string_view bytes, const std::string& sourceName) {
+  const std::filesystem::path source(sourceName);
+  const auto truncated = [&](std::uint64_t expected) {
+    throwInputError(source, "truncated (expected " + std::to_string(expected) + " bytes, found " +
+                                std::to_string(bytes.size()) + ")");
+  };
+  const std::size_t magicBytes = std::min(bytes.size(), kMagic.size());
+  if (bytes.substr(0, magicBytes) != kMagic.substr(0, magicBytes) || bytes.empty()) {
+    throwInputError(source, "not a clm3d model");
+  }
+  if (bytes.size() < kHeaderBytes) truncated(kHeaderBytes);
+  Reader header(bytes.substr(kMagic.size(), kHeaderBytes - kMagic.size()));
+  const auto version = header.read<std::uint32_t>();
+  const auto payloadLength = header.read<std::uint64_t>();
+  const auto checksum = header.read<std::uint32_t>();
+  if (version == 0) throwInputError(source, "corrupt (format version 0)");
+  if (version > kModelFormatVersion) {
+    throwInputError(source, "format version " + std::to_string(version) +
+                                " is newer than this clm3d (" +
+                                std::to_string(kModelFormatVersion) + "); update clm3d");
+  }
+  const std::uint64_t available = bytes.size() - kHeaderBytes;
+  if (payloadLength > available) {
+    if (payloadLength > std::numeric_limits<std::uint64_t>::max() - kHeaderBytes) {
+      throwInputError(source,
+                      "corrupt (impossible payload length " + std::to_string(payloadLength) + ")");
+    }
+    truncated(kHeaderBytes + payloadLength);
+  }
+  if (payloadLength < available) {
+    throwInputError(source, "corrupt (" + std::to_string(available - payloadLength) +
+                                " unexpected bytes after the payload)");
+  }
+  const std::string_view payload = bytes.substr(kHeaderBytes);
+  if (crc32(payload) != checksum) throwInputError(source, "corrupt (checksum mismatch)");
+  try {
+    return parsePayload(payload);
+  } catch (const Error& e) {
+    throwInputError(source, e.what());
+  } catch (const std::exception& e) {  // nlohmann type errors, bad_alloc
+    throwInputError(source, std::string("corrupt: ") + e.what());
+  }
+}
+
+}  // namespace clm3d

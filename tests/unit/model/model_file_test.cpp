@@ -1,0 +1,176 @@
+// The .clm3d file: bit-exact round trip, and clean InputErrors naming the file for truncated,
+// corrupt, foreign, newer and inconsistent files.
+#include "core/model/model_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <cstring>
+
+#include "core/common/error.hpp"
+#include "tests/support/test_support.hpp"
+#include "tests/support/tiny_model.hpp"
+
+namespace clm3d {
+namespace {
+
+// The InputError message of parsing bytes, or "" if it parses.
+std::string parseError(std::string_view bytes, const std::string& name = "m.clm3d") {
+  try {
+    parseModel(bytes, name);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void writeU32(std::string& bytes, std::size_t at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i)
+    bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(value >> (8 * i));
+}
+
+// Replaces the payload and fixes its length and checksum, to reach the checks after them.
+std::string withPayload(const std::string& file, const std::string& payload) {
+  std::string result = file.substr(0, 24) + payload;
+  for (int i = 0; i < 8; ++i)
+    result[12 + static_cast<std::size_t>(i)] = static_cast<char>(payload.size() >> (8 * i));
+  writeU32(result, 20, crc32(payload));
+  return result;
+}
+
+TEST(ModelFile, Crc32MatchesTheStandardCheckValue) {
+  EXPECT_EQ(crc32("123456789"), 0xCBF43926u);
+  EXPECT_EQ(crc32(""), 0u);
+}
+
+TEST(ModelFile, RoundTripIsBitExact) {
+  test::TempDir dir;
+  const ClmModel model = test::makeTinyModel();
+  const auto path = dir / "tiny.clm3d";
+  saveModel(model, path);
+  if (const char* corpus = std::getenv("CLM3D_WRITE_MODEL_SEED")) saveModel(model, corpus);
+  const ClmModel loaded = loadModel(path);
+  EXPECT_EQ(serializeModel(loaded), test::readFile(path));
+  EXPECT_EQ(loaded.schemeJson, model.schemeJson);
+  EXPECT_EQ(loaded.settingsJson, model.settingsJson);
+  EXPECT_EQ(loaded.provenance.created, model.provenance.created);
+  EXPECT_EQ(loaded.provenance.seed, model.provenance.seed);
+  EXPECT_EQ(loaded.shape.meanShape, model.shape.meanShape);
+  EXPECT_EQ(loaded.shape.modes, model.shape.modes);
+  EXPECT_EQ(loaded.shape.variances, model.shape.variances);
+  ASSERT_EQ(loaded.views.size(), model.views.size());
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    EXPECT_EQ(loaded.views[v].yawDeg, model.views[v].yawDeg);
+    EXPECT_EQ(loaded.views[v].mirrored, model.views[v].mirrored);
+    EXPECT_EQ(loaded.views[v].visible, model.views[v].visible);
+    for (std::size_t s = 0; s < model.views[v].scales.size(); ++s) {
+      const PatchModel& a = loaded.views[v].scales[s];
+      const PatchModel& b = model.views[v].scales[s];
+      EXPECT_EQ(a.landmarks, b.landmarks);
+      EXPECT_EQ(a.pca.mean, b.pca.mean);
+      EXPECT_EQ(a.pca.components, b.pca.components);
+      EXPECT_EQ(a.pca.variances, b.pca.variances);
+      EXPECT_EQ(a.alpha, b.alpha);
+    }
+  }
+}
+
+TEST(ModelFile, EveryTruncationFailsCleanlyNamingTheFile) {
+  const std::string bytes = serializeModel(test::makeTinyModel());
+  for (std::size_t length = 0; length < bytes.size(); ++length) {
+    const std::string message = parseError(std::string_view(bytes).substr(0, length));
+    ASSERT_EQ(message.rfind("m.clm3d: ", 0), 0u) << "length " << length << ": " << message;
+    if (length >= 8) {
+      EXPECT_NE(
+          message.find("truncated (expected " + std::to_string(length < 24 ? 24 : bytes.size()) +
+                       " bytes, found " + std::to_string(length) + ")"),
+          std::string::npos)
+          << message;
+    }
+  }
+}
+
+TEST(ModelFile, TruncatedFileOnDiskNamesTheFile) {
+  test::TempDir dir;
+  const auto path = dir / "cut.clm3d";
+  test::writeFile(path, serializeModel(test::makeTinyModel()).substr(0, 100));
+  try {
+    loadModel(path);
+    FAIL() << "a truncated model loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": truncated"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(loadModel(dir / "absent.clm3d"), InputError);
+}
+
+TEST(ModelFile, FlippedByteIsAChecksumError) {
+  const std::string good = serializeModel(test::makeTinyModel());
+  for (const std::size_t at : {std::size_t{30}, good.size() / 2, good.size() - 1}) {
+    std::string bad = good;
+    bad[at] = static_cast<char>(bad[at] ^ 0x10);
+    EXPECT_EQ(parseError(bad), "m.clm3d: corrupt (checksum mismatch)");
+  }
+}
+
+TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
+  const std::string good = serializeModel(test::makeTinyModel());
+  EXPECT_EQ(parseError("P3\n2 2\n255\n"), "m.clm3d: not a clm3d model");
+  EXPECT_EQ(parseError(""), "m.clm3d: not a clm3d model");
+  std::string newer = good;
+  writeU32(newer, 8, 7);
+  EXPECT_EQ(parseError(newer),
+            "m.clm3d: format version 7 is newer than this clm3d (1); update clm3d");
+  std::string zero = good;
+  writeU32(zero, 8, 0);
+  EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
+  EXPECT_NE(parseError(good + "x").find("1 unexpected bytes"), std::string::npos);
+}
+
+TEST(ModelFile, RejectsInconsistentContentWithAValidChecksum) {
+  const std::string good = serializeModel(test::makeTinyModel());
+  const std::string payload = good.substr(24);
+  // The header says one more shape mode than the arrays hold.
+  std::string header = payload.substr(8, static_cast<std::size_t>(payload.size()));
+  std::uint64_t headerLength = 0;
+  std::memcpy(&headerLength, payload.data(), 8);
+  header = payload.substr(8, headerLength);
+  const auto at = header.find("\"dims\":3");
+  ASSERT_NE(at, std::string::npos);
+  std::string edited = header;
+  edited.replace(at, 8, "\"dims\":4");
+  EXPECT_NE(parseError(
+                withPayload(good, payload.substr(0, 8) + edited + payload.substr(8 + headerLength)))
+                .find("shape.dims"),
+            std::string::npos);
+  // Not JSON.
+  std::string garbled = header;
+  garbled[0] = '[';
+  EXPECT_NE(parseError(withPayload(
+                           good, payload.substr(0, 8) + garbled + payload.substr(8 + headerLength)))
+                .find("m.clm3d: "),
+            std::string::npos);
+  // An array value out of range: an alpha of 2 (the last float of the file).
+  std::string arrays = payload;
+  const float two = 2.0f;
+  std::memcpy(arrays.data() + arrays.size() - 4, &two, 4);
+  EXPECT_NE(parseError(withPayload(good, arrays)).find("views[2].scales[1].alpha[3]"),
+            std::string::npos)
+      << parseError(withPayload(good, arrays));
+  // Arrays cut short but the checksum fixed.
+  EXPECT_NE(
+      parseError(withPayload(good, payload.substr(0, payload.size() - 4))).find("bytes of arrays"),
+      std::string::npos);
+}
+
+TEST(ModelFile, SavingAnInvalidModelOrToABadPathFails) {
+  ClmModel model = test::makeTinyModel();
+  model.views.clear();
+  test::TempDir dir;
+  EXPECT_THROW(saveModel(model, dir / "x.clm3d"), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.clm3d"));
+  EXPECT_THROW(saveModel(test::makeTinyModel(), dir / "missing" / "x.clm3d"), InputError);
+}
+
+}  // namespace
+}  // namespace clm3d
