@@ -1,0 +1,35 @@
+// Builds the texture models of every view: renders each subject from each view with perturbed
+// samples on a pool of worker threads (one renderer per worker and subject), extracts patches at
+// every scale, marks landmarks hidden in more than settings.hiddenShare of a view's samples, and
+// fits a patch PCA per view and scale. Right-side views may be mirrors of left-side ones.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/common/progress.hpp"
+#include "core/mesh/textured_mesh.hpp"
+#include "core/model/texture_model.hpp"
+#include "core/scheme/landmark_set.hpp"
+#include "core/scheme/scheme.hpp"
+#include "core/train/train_settings.hpp"
+
+namespace clm3d {
+
+// A textured training subject, by reference (meshes are large); landmarks in model coordinates.
+struct TrainingSubject {
+  std::string id;
+  const TexturedMesh* mesh = nullptr;
+  const LandmarkSet* landmarks = nullptr;
+};
+
+// Per view of settings.views(), in that order. progress gets fractions in [0, 1] with stage
+// "rendering" then "pca". Deterministic for a given settings.seed whatever the thread count.
+// Throws Cancelled when the token is set (checked before every render), InputError for bad
+// subjects (no subjects, wrong landmark count, missing eye centres).
+std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& subjects,
+                                          const Scheme& scheme, const TrainSettings& settings,
+                                          const ProgressCallback& progress = {},
+                                          const CancelToken* cancel = nullptr);
+
+}  // namespace clm3d

@@ -1,0 +1,60 @@
+// The settings of a training run (views, scales, patch size, samples, perturbations, PCA
+// variances, mirroring, seed, threads): one struct the CLI fills, the trainer reads and the model
+// file keeps as JSON, so every trained model records how it was made.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/model/shape_model.hpp"
+
+namespace clm3d {
+
+// Random perturbations of each training render around its view centre (uniform in +-range).
+struct PerturbationSettings {
+  double rotationDeg = 5.0;     // pitch, yaw and roll jitter
+  double scale = 0.05;          // relative face size jitter
+  double shiftPixels = 0.5;     // sub-pixel shift of the face at the finest scale
+  double lightDirection = 0.3;  // jitter of each component of the light direction
+  double ambient = 0.1;         // jitter of the ambient term (default 0.45)
+  double diffuse = 0.15;        // jitter of the diffuse term (default 0.65)
+};
+
+struct ViewCentre {
+  double pitchDeg = 0;
+  double yawDeg = 0;
+};
+
+struct TrainSettings {
+  std::vector<double> yawsDeg{-60, -30, 0, 30, 60};
+  std::vector<double> pitchesDeg{-30, 0, 30};
+  int scales = 3;            // pyramid scales per view, 0 = finest
+  int patchSize = 20;        // pixels, at every scale
+  double patchRatio = 0.24;  // patchSize / inter-ocular distance at the finest scale
+  int samplesPerView = 5;    // perturbed renders per subject and view
+  PerturbationSettings perturbation;
+  double textureVariance = 0.95;  // variance kept by each view/scale patch PCA
+  int textureMaxModes = 0;        // > 0: at most this many texture modes
+  ShapeModelSettings shape;       // the shape model (dims forced to 2 for singleView)
+  bool mirrorRightViews = true;   // build yaw > 0 views by mirroring yaw < 0 ones
+  bool singleView = false;        // the 2D baseline: one frontal view, 2D shape model
+  double hiddenShare = 0.5;       // hidden in more than this share of samples -> left out
+  int supersample = 2;            // renderer anti-aliasing
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0 = one per core (not stored: the model does not depend on it)
+
+  // Throws InputError naming the setting that is out of range.
+  void validate() const;
+  // The views of the model, pitch-major (pitch ascending, then yaw ascending); one frontal view
+  // for singleView.
+  std::vector<ViewCentre> views() const;
+  // Inter-ocular distance in pixels at the finest scale: patchSize / patchRatio.
+  double interOcularPixels() const { return patchSize / patchRatio; }
+  // Side of the square training renders (pixels): the face and the coarsest patches fit.
+  int renderSize() const;
+  // Everything that determines the model, as a JSON object.
+  std::string toJson() const;
+};
+
+}  // namespace clm3d

@@ -1,0 +1,139 @@
+#include "core/train/training_sample.hpp"
+
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "core/common/error.hpp"
+#include "core/geometry/projection.hpp"
+#include "core/image/patch_sampling.hpp"
+#include "core/image/pyramid.hpp"
+#include "core/model/texture_model.hpp"
+
+namespace clm3d {
+namespace {
+
+// SplitMix64: a small, well-mixed, portable generator (std distributions are not portable).
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [-range, range].
+  double symmetric(double range) {
+    const double unit = static_cast<double>(next() >> 11) * 0x1.0p-53;
+    return (2.0 * unit - 1.0) * range;
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
+  Random r(a ^ (b * 0xD1B54A32D192ED03ull));
+  return r.next();
+}
+
+}  // namespace
+
+SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std::uint64_t seed,
+                      int subject, int viewIndex, int sample) {
+  const std::uint64_t key = mix(
+      mix(mix(seed, static_cast<std::uint64_t>(subject)), static_cast<std::uint64_t>(viewIndex)),
+      static_cast<std::uint64_t>(sample));
+  Random random(key);
+  const PerturbationSettings& p = settings.perturbation;
+  SampleSpec spec;
+  spec.pitchDeg = view.pitchDeg + random.symmetric(p.rotationDeg);
+  spec.yawDeg = view.yawDeg + random.symmetric(p.rotationDeg);
+  spec.rollDeg = random.symmetric(p.rotationDeg);
+  spec.scale = 1.0 + random.symmetric(p.scale);
+  spec.shiftPixels.x() = random.symmetric(p.shiftPixels);
+  spec.shiftPixels.y() = random.symmetric(p.shiftPixels);
+  const Lighting base;
+  spec.lighting.direction = base.direction.normalized();
+  for (int i = 0; i < 3; ++i) spec.lighting.direction[i] += random.symmetric(p.lightDirection);
+  if (spec.lighting.direction.z() < 0.3) spec.lighting.direction.z() = 0.3;  // lit from the front
+  spec.lighting.ambient = base.ambient + random.symmetric(p.ambient);
+  spec.lighting.diffuse = base.diffuse + random.symmetric(p.diffuse);
+  return spec;
+}
+
+SampleFrame frameSample(const LandmarkSet& landmarks, std::pair<int, int> eyes,
+                        const SampleSpec& spec, const TrainSettings& settings) {
+  if (!landmarks.has(eyes.first) || !landmarks.has(eyes.second)) {
+    throw InputError("training: a subject lacks an eye-centre landmark (" +
+                     std::to_string(eyes.first + 1) + " or " + std::to_string(eyes.second + 1) +
+                     "), which sets the face size");
+  }
+  const double iodMm = (landmarks.point(eyes.first) - landmarks.point(eyes.second)).norm();
+  if (!(iodMm > 1e-6)) throw InputError("training: a subject's eye centres coincide");
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int i = 0; i < landmarks.size(); ++i) {
+    if (!landmarks.has(i)) continue;
+    centroid += landmarks.point(i);
+    ++count;
+  }
+  centroid /= count;
+
+  const int size = settings.renderSize();
+  SampleFrame frame;
+  frame.camera = Camera::fromVerticalFov(size, size, 20.0);
+  const double focal = frame.camera.focalY();
+  const double distance = focal * iodMm / (settings.interOcularPixels() * spec.scale);
+  frame.pose = Pose::fromDegrees(spec.pitchDeg, spec.yawDeg, spec.rollDeg);
+  frame.pose.translation = -(frame.pose.rotation() * centroid);
+  frame.pose.translation.z() -= distance;
+  // A shift of s pixels at depth d is s * d / f millimetres; image y points down.
+  frame.pose.translation.x() += spec.shiftPixels.x() * distance / focal;
+  frame.pose.translation.y() -= spec.shiftPixels.y() * distance / focal;
+  const double depthRange = 4.0 * iodMm + 200.0;
+  frame.camera = Camera::fromVerticalFov(size, size, 20.0, std::max(10.0, distance - depthRange),
+                                         distance + depthRange);
+  return frame;
+}
+
+SamplePatches renderSample(OffscreenRenderer& renderer, const LandmarkSet& landmarks,
+                           std::pair<int, int> eyes, const SampleSpec& spec,
+                           const TrainSettings& settings) {
+  const SampleFrame frame = frameSample(landmarks, eyes, spec, settings);
+  const RenderResult result = renderer.render(frame.pose, frame.camera, spec.lighting);
+
+  cv::Mat alpha8;
+  cv::extractChannel(result.bgra, alpha8, 3);
+  cv::Mat alpha;
+  alpha8.convertTo(alpha, CV_32F, 1.0 / 255.0);
+  const std::vector<cv::Mat> greyPyramid =
+      gaussianPyramid(toGreyFloat(result.bgra), settings.scales);
+  const std::vector<cv::Mat> alphaPyramid = gaussianPyramid(alpha, settings.scales);
+
+  const int n = landmarks.size();
+  const int size = settings.patchSize;
+  SamplePatches patches;
+  patches.visible.assign(static_cast<std::size_t>(n), false);
+  for (int s = 0; s < settings.scales; ++s) {
+    patches.grey.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
+    patches.alpha.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!landmarks.has(i)) continue;
+    const Eigen::Vector3d model = landmarks.point(i);
+    patches.visible[static_cast<std::size_t>(i)] = result.isVisible(model);
+    const Eigen::Vector2d pixel = projectPoint(model, frame.pose, frame.camera);
+    for (int s = 0; s < settings.scales; ++s) {
+      const auto level = static_cast<std::size_t>(s);
+      const Eigen::Vector2d at = toPyramidLevel(pixel, s);
+      auto grey = patches.grey[level].col(i);
+      samplePatch(greyPyramid[level], at, size, grey);
+      normalisePatch(grey);
+      samplePatch(alphaPyramid[level], at, size, patches.alpha[level].col(i));
+    }
+  }
+  return patches;
+}
+
+}  // namespace clm3d

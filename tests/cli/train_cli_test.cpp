@@ -1,0 +1,60 @@
+// clm3d train end to end on a tiny procedural manifest: exit codes, the model file, the report,
+// and a bad manifest named in the error.
+#include <gtest/gtest.h>
+
+#include "core/model/model_file.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+constexpr const char* kTinyManifest = R"({
+  "version": 1,
+  "name": "tiny",
+  "procedural": [{"seeds": [1, 2], "texture_size": 256, "face_step_degrees": 2.0}]
+})";
+
+TEST(TrainCli, TrainsASmallModelThatLoads) {
+  test::TempDir dir;
+  test::writeFile(dir / "tiny.json", kTinyManifest);
+  const auto result = test::runClm3d(
+      "train --dataset " + (dir / "tiny.json").string() + " --out " + (dir / "m.clm3d").string() +
+      " --report " + (dir / "report").string() +
+      " --views-yaw -60,0,60 --views-pitch 0 --scales 2 --patch-size 8 --samples 2 --threads 2");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const ClmModel model = loadModel(dir / "m.clm3d");
+  EXPECT_EQ(model.views.size(), 3u);
+  EXPECT_EQ(model.views[0].scales.size(), 2u);
+  EXPECT_NE(result.output.find("trained multi-view 3D CLM"), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "report" / "mean-patches-scale0.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "report" / "hidden-landmarks.png"));
+}
+
+TEST(TrainCli, SingleViewBaseline) {
+  test::TempDir dir;
+  test::writeFile(dir / "tiny.json", kTinyManifest);
+  const auto result =
+      test::runClm3d("train --single-view --dataset " + (dir / "tiny.json").string() + " --out " +
+                     (dir / "b.clm3d").string() + " --scales 1 --patch-size 8 --samples 2");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const ClmModel model = loadModel(dir / "b.clm3d");
+  EXPECT_TRUE(model.singleView);
+  EXPECT_EQ(model.views.size(), 1u);
+}
+
+TEST(TrainCli, BadManifestExitsOneNamingTheFile) {
+  test::TempDir dir;
+  test::writeFile(dir / "bad.json", "{ not json");
+  const auto result = test::runClm3d("train --dataset " + (dir / "bad.json").string() + " --out " +
+                                     (dir / "m.clm3d").string());
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("bad.json"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.clm3d"));
+}
+
+TEST(TrainCli, MissingOptionsAreAUsageError) {
+  EXPECT_EQ(test::runClm3d("train --out x.clm3d").exitCode, 2);
+}
+
+}  // namespace
+}  // namespace clm3d
