@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addSynthHeadCommand(app);
   clm3d::cli::addLandmarksCommand(app);
   clm3d::cli::addDemoCommand(app);
+  clm3d::cli::addInfoCommand(app);
   clm3d::cli::addTrainCommand(app);
 
   try {

@@ -10,6 +10,7 @@ void addRenderCommand(CLI::App& root);
 void addSynthHeadCommand(CLI::App& root);
 void addLandmarksCommand(CLI::App& root);
 void addDemoCommand(CLI::App& root);
+void addInfoCommand(CLI::App& root);
 void addTrainCommand(CLI::App& root);
 
 }  // namespace clm3d::cli
