@@ -16,9 +16,9 @@ using test::writeFile;
 
 constexpr int kLeftEye = 7, kRightEye = 10;  // thesis landmarks 8 and 11, 0-based
 
-DatasetManifest tinyProcedural(const TempDir& dir) {
+DatasetManifest tinyProcedural(const TempDir& dir, const std::string& seeds = "3,5") {
   writeFile(dir / "tiny.json", R"({"version": 1, "procedural": [
-      {"seeds": "3,5", "expressions": ["neutral", "smile"], "texture_size": 256,
+      {"seeds": ")" + seeds + R"(", "expressions": ["neutral", "smile"], "texture_size": 256,
        "face_step_degrees": 2}]})");
   return loadManifest(dir / "tiny.json");
 }
@@ -51,10 +51,11 @@ TEST(LoadTexturedSubjects, ProceduralHeadsInManifestOrderWithLandmarkOneAtTheOri
 
 TEST(LoadTexturedSubjects, SameResultOnAnyNumberOfThreads) {
   TempDir dir;
-  const DatasetManifest manifest = tinyProcedural(dir);
+  const DatasetManifest manifest = tinyProcedural(dir, "4");
   const auto one = loadTexturedSubjects(manifest, 1);
   const auto two = loadTexturedSubjects(manifest, 2);
-  ASSERT_EQ(one.size(), two.size());
+  ASSERT_EQ(one.size(), 2u);
+  ASSERT_EQ(two.size(), 2u);
   for (std::size_t i = 0; i < one.size(); ++i) {
     EXPECT_EQ(one[i].id, two[i].id);
     EXPECT_TRUE(one[i].landmarks == two[i].landmarks);
