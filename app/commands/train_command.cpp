@@ -137,6 +137,18 @@ void addTrainCommand(CLI::App& root) {
       ->check(CLI::Range(0.01, 1.0));
   command->add_flag("--no-mirror", args->noMirror,
                     "Render the right-side views instead of mirroring");
+  command->add_flag("--mirror-shapes", args->settings.shape.mirror,
+                    "Add a left/right mirrored copy of every training shape to the shape model");
+  command
+      ->add_option("--shape-limit", args->settings.shape.limitSd,
+                   "Shape parameter limit in standard deviations")
+      ->default_val(3.0)
+      ->check(CLI::Range(0.5, 10.0));
+  command
+      ->add_option("--texture-max-modes", args->settings.textureMaxModes,
+                   "At most this many modes per patch PCA (0 = no cap; smaller models)")
+      ->default_val(0)
+      ->check(CLI::Range(0, 1000));
   command->callback([args] { runTrain(*args); });
 }
 

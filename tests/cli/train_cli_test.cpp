@@ -56,5 +56,24 @@ TEST(TrainCli, MissingOptionsAreAUsageError) {
   EXPECT_EQ(test::runClm3d("train --out x.clm3d").exitCode, 2);
 }
 
+TEST(TrainCli, ShapeMirroringLimitAndModeCap) {
+  test::TempDir dir;
+  test::writeFile(dir / "tiny.json", kTinyManifest);
+  const auto result = test::runClm3d(
+      "train --dataset " + (dir / "tiny.json").string() + " --out " + (dir / "s.clm3d").string() +
+      " --views-yaw 0 --views-pitch 0 --scales 1 --patch-size 8 --samples 3 --mirror-shapes"
+      " --shape-limit 2.5 --texture-max-modes 2");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const ClmModel model = loadModel(dir / "s.clm3d");
+  EXPECT_DOUBLE_EQ(model.shape.limitSd, 2.5);
+  EXPECT_LE(model.views[0].scales[0].pca.modeCount(), 2);
+  // With mirrored copies the mean shape is left/right symmetric: a mirror pair's x are opposite.
+  const Eigen::Matrix3Xd& mean = model.shape.meanShape;
+  constexpr int kLeftEyeCentre = 7;
+  constexpr int kRightEyeCentre = 10;
+  EXPECT_NEAR(mean(0, kLeftEyeCentre), -mean(0, kRightEyeCentre), 1e-6);
+  EXPECT_NEAR(mean(1, kLeftEyeCentre), mean(1, kRightEyeCentre), 1e-6);
+}
+
 }  // namespace
 }  // namespace clm3d
