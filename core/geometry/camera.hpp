@@ -9,6 +9,10 @@
 
 namespace clm3d {
 
+// The vertical field of view assumed for video when none is given: a typical webcam's. Synthetic
+// test sequences are rendered with it and the tracker assumes it, so both see the same camera.
+inline constexpr double kDefaultVerticalFovDeg = 40.0;
+
 struct Camera {
   int width = 256;
   int height = 256;
