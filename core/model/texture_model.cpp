@@ -16,15 +16,20 @@ int PatchModel::entryOf(int landmark) const {
 
 void normalisePatch(Eigen::Ref<Eigen::VectorXf> patch) {
   if (patch.size() == 0) return;
-  // Accumulate in double: 400 floats of 0..255 lose digits in a float sum.
-  const Eigen::VectorXd values = patch.cast<double>();
-  const double mean = values.mean();
-  const double variance = (values.array() - mean).square().mean();
+  // Accumulate in double (400 floats of 0..255 lose digits in a float sum), without allocating:
+  // the fitter calls this for every landmark on every iteration.
+  double sum = 0.0;
+  for (const float value : patch) sum += value;
+  const double mean = sum / static_cast<double>(patch.size());
+  double squares = 0.0;
+  for (const float value : patch) squares += (value - mean) * (value - mean);
+  const double variance = squares / static_cast<double>(patch.size());
   if (!(variance > 1e-12) || !std::isfinite(variance)) {
     patch.setZero();
     return;
   }
-  patch = ((values.array() - mean) / std::sqrt(variance)).cast<float>().matrix();
+  const double inverse = 1.0 / std::sqrt(variance);
+  for (float& value : patch) value = static_cast<float>((value - mean) * inverse);
 }
 
 Eigen::VectorXf flipPatch(const Eigen::Ref<const Eigen::VectorXf>& patch, int size) {

@@ -1,0 +1,160 @@
+#include "core/fit/fitter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/common/error.hpp"
+
+namespace clm3d {
+namespace {
+
+int modelScales(const ClmModel& model) {
+  int scales = 0;
+  for (const ViewModel& view : model.views) {
+    const int count = static_cast<int>(view.scales.size());
+    scales = scales == 0 ? count : std::min(scales, count);
+  }
+  return scales;
+}
+
+// Pixels per model millimetre at the head's centre for the state's pose (before working-image
+// scaling): the size that training normalised (core/train frameSample uses the 3D distance).
+double pixelsPerMillimetre(const Camera& camera, const Eigen::Ref<const Eigen::VectorXd>& p,
+                           double depth) {
+  return camera.focalY() * p[kParamScale] / std::max(-depth, 1e-6);
+}
+
+}  // namespace
+
+void FitSettings::validate(const ClmModel& model) const {
+  const int available = modelScales(model);
+  if (scales < 0 || scales > available) {
+    throw InputError("fit: --scales must be between 1 and " + std::to_string(available) +
+                     " (the model's scales), or 0 for all");
+  }
+  if (maxIterations < 1) throw InputError("fit: the iteration limit must be at least 1");
+  if (!(tolerancePixels > 0.0)) throw InputError("fit: the tolerance must be positive");
+  if (!(viewHysteresisDeg >= 0.0)) throw InputError("fit: the view hysteresis must be >= 0");
+}
+
+Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& settings)
+    : model_(&model),
+      camera_(camera),
+      settings_(settings),
+      selector_(model, settings.viewHysteresisDeg),
+      problem_(model.shape, camera),
+      inputProjector_(model.shape, camera) {
+  if (model.views.empty()) throw InputError("fit: the model has no views");
+  settings_.validate(model);
+  scales_ = settings_.scales > 0 ? settings_.scales : modelScales(model);
+  optimiser_ = makeOptimiser(settings_.optimiser, settings_.optimiserSettings);
+  eyes_ = model.scheme().normalisationPair();
+  inputProjector_.setInputPixels();
+  const PatchModel& finest = model.views.front().scales.front();
+  targetInterOcular_ = finest.patchSize / model.patchRatio;
+}
+
+Fitter::~Fitter() = default;
+
+FitState Fitter::meanState(const Pose& pose) const {
+  return FitState{pose, Eigen::VectorXd::Zero(model_->shape.modeCount())};
+}
+
+Eigen::Matrix2Xd Fitter::project(const FitState& state) const {
+  Eigen::Matrix2Xd points(2, model_->shape.pointCount());
+  inputProjector_.setDepth(state.pose.translation.z());
+  inputProjector_.project(toParams(state), points);
+  return points;
+}
+
+FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentView) {
+  if (image.cols != camera_.width || image.rows != camera_.height) {
+    throw InputError("fit: the image is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + " but the camera is " +
+                     std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
+  }
+  const int modes = model_->shape.modeCount();
+  if (start.shape.size() != 0 && start.shape.size() != modes) {
+    throw InputError("fit: the start state has " + std::to_string(start.shape.size()) +
+                     " shape coefficients, the model " + std::to_string(modes));
+  }
+  FitState state = start;
+  if (state.shape.size() == 0) state.shape = Eigen::VectorXd::Zero(modes);
+  const double depth = state.pose.translation.z();
+  if (!(depth < 0.0)) throw InputError("fit: the start pose must be in front of the camera");
+  Eigen::VectorXd p = toParams(state);
+  problem_.clamp(p);
+
+  // The region around the face, scaled so that the face has the training inter-ocular distance.
+  const Eigen::Matrix3Xd shape = model_->shape.shape(p.tail(modes));
+  const double interOcularMm = (shape.col(eyes_.first) - shape.col(eyes_.second)).norm();
+  const double scale = std::clamp(
+      targetInterOcular_ / std::max(interOcularMm * pixelsPerMillimetre(camera_, p, depth), 1e-6),
+      1.0 / 64.0, 16.0);
+  const Eigen::Matrix2Xd points = project(state);
+  const Eigen::Vector2d low = points.rowwise().minCoeff();
+  const Eigen::Vector2d high = points.rowwise().maxCoeff();
+  const double searchMargin =
+      (model_->views.front().scales.front().patchSize * std::ldexp(1.0, scales_ - 1)) / scale;
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(searchMargin) + 0.25 * (high - low);
+  if (!low.allFinite() || !high.allFinite() || (high + margin).x() < 0 || (high + margin).y() < 0 ||
+      (low - margin).x() > image.cols - 1 || (low - margin).y() > image.rows - 1) {
+    throw InputError("fit: the start pose puts the face outside the image");
+  }
+  makeWorkingImage(image, low - margin, high + margin, scale, scales_, working_);
+
+  optimiser_->beginFit(p);
+  int view =
+      currentView >= 0 && currentView < static_cast<int>(model_->views.size()) ? currentView : -1;
+  FitResult result;
+  Eigen::Matrix2Xd before;
+  Eigen::Matrix2Xd after;
+  for (int level = scales_ - 1; level >= 0; --level) {
+    result.converged = false;
+    for (int iteration = 0; iteration < settings_.maxIterations; ++iteration) {
+      view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
+      problem_.configure(model_->views[static_cast<std::size_t>(view)].scales[level], working_,
+                         level, settings_.alphaMask, depth);
+      problem_.synthesiseTemplates(p);
+      const int m = problem_.landmarkCount();
+      before.resize(2, m);
+      after.resize(2, m);
+      problem_.projector().project(p, before);
+      optimiser_->step(problem_, p);
+      problem_.clamp(p);
+      problem_.projector().project(p, after);
+      ++result.iterations;
+      double moved = 0.0;
+      for (int k = 0; k < m; ++k) moved = std::max(moved, (after.col(k) - before.col(k)).norm());
+      if (!(moved > settings_.tolerancePixels)) {
+        result.converged = std::isfinite(moved);
+        break;
+      }
+    }
+  }
+
+  // Confidence: the match of templates synthesised at the final estimate, at the finest scale.
+  view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
+  const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
+  problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
+  problem_.synthesiseTemplates(p);
+  result.confidence = problem_.meanNcc(p);
+  lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
+  for (int k = 0; k < problem_.landmarkCount(); ++k) {
+    lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);
+  }
+  lastTemplatePixel_ = 1.0 / working_.gain.mean();
+
+  fromParams(p, state);
+  result.state = state;
+  result.points = project(state);
+  result.view = view;
+  result.modelled.assign(static_cast<std::size_t>(model_->shape.pointCount()), false);
+  for (const int landmark : finest.landmarks) {
+    result.modelled[static_cast<std::size_t>(landmark)] = true;
+  }
+  return result;
+}
+
+}  // namespace clm3d

@@ -1,0 +1,89 @@
+// The CLM search (thesis figure 3.16): from a starting pose and shape, coarse to fine over the
+// model's pyramid scales, repeatedly choose the view, synthesise the templates from the image and
+// let the chosen optimiser update pose and shape, until the points stop moving. One Fitter per
+// thread; it keeps its buffers between frames so that tracking allocates nothing per iteration.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <opencv2/core/mat.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/fit/fit_state.hpp"
+#include "core/fit/optimiser.hpp"
+#include "core/fit/search_problem.hpp"
+#include "core/fit/view_selector.hpp"
+#include "core/fit/working_image.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/model/clm_model.hpp"
+
+namespace clm3d {
+
+struct FitSettings {
+  std::string optimiser = "fastncc";
+  OptimiserSettings optimiserSettings;
+  int scales = 0;                // pyramid scales searched, finest n; 0 = all of the model's
+  int maxIterations = 6;         // per scale
+  double tolerancePixels = 0.1;  // converged when no point moves more (level pixels)
+  bool alphaMask = true;         // alpha masking of template and image patches
+  double viewHysteresisDeg = 5.0;
+
+  void validate(const ClmModel& model) const;  // InputError naming the bad setting
+};
+
+struct FitResult {
+  FitState state;
+  Eigen::Matrix2Xd points;     // every scheme landmark, input pixels
+  std::vector<bool> modelled;  // landmarks the final view's model holds (the others are hidden)
+  int view = -1;
+  double confidence = 0.0;  // mean NCC at the finest scale searched, in [-1, 1]
+  bool converged = false;   // the finest scale met the tolerance within maxIterations
+  int iterations = 0;       // over all scales
+};
+
+class Fitter {
+ public:
+  // camera: the camera of the input images (its size must match them). Throws InputError for
+  // settings the model cannot honour.
+  Fitter(const ClmModel& model, const Camera& camera, const FitSettings& settings = {});
+  ~Fitter();
+  Fitter(const Fitter&) = delete;
+  Fitter& operator=(const Fitter&) = delete;
+
+  // Searches `image` (CV_8UC1/3/4, or CV_32FC1 grey in [0, 1]) from `start`. `currentView` is the
+  // view used so far (tracking), -1 for none. Throws InputError for an image of the wrong size.
+  FitResult fit(const cv::Mat& image, const FitState& start, int currentView = -1);
+
+  // Points of every landmark at `state` in input pixels.
+  Eigen::Matrix2Xd project(const FitState& state) const;
+  // The unmasked synthetic templates of the last search's finest scale, per landmark of the
+  // final view (in `modelled` order), patchSize^2 values each in the model's normalised units,
+  // and the working-image pixel size of one template pixel in input pixels (for drawing).
+  const std::vector<Eigen::VectorXf>& lastTemplates() const { return lastTemplates_; }
+  double lastTemplatePixelSize() const { return lastTemplatePixel_; }
+
+  const ClmModel& model() const { return *model_; }
+  const Camera& camera() const { return camera_; }
+  const FitSettings& settings() const { return settings_; }
+  // A fresh FitState at the mean shape with the given pose.
+  FitState meanState(const Pose& pose) const;
+
+ private:
+  const ClmModel* model_;
+  Camera camera_;
+  FitSettings settings_;
+  int scales_ = 1;
+  ViewSelector selector_;
+  std::unique_ptr<Optimiser> optimiser_;
+  SearchProblem problem_;
+  WorkingImage working_;
+  mutable ShapeProjector inputProjector_;  // every landmark, input pixels
+  std::pair<int, int> eyes_;               // the scheme's normalisation pair
+  double targetInterOcular_ = 0.0;         // pixels at the finest scale, as in training
+  std::vector<Eigen::VectorXf> lastTemplates_;
+  double lastTemplatePixel_ = 1.0;
+};
+
+}  // namespace clm3d

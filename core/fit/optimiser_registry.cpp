@@ -1,0 +1,40 @@
+#include <functional>
+#include <utility>
+
+#include "core/common/error.hpp"
+#include "core/fit/optimiser.hpp"
+#include "core/fit/optimiser_factories.hpp"
+
+namespace clm3d {
+namespace {
+
+using Factory = std::unique_ptr<Optimiser> (*)(const OptimiserSettings&);
+
+const std::vector<std::pair<std::string, Factory>>& registry() {
+  static const std::vector<std::pair<std::string, Factory>> entries = {
+      // OPTIMISER ENTRIES (one line each: {"name", &makeXOptimiser},)
+  };
+  return entries;
+}
+
+}  // namespace
+
+std::unique_ptr<Optimiser> makeOptimiser(std::string_view name, const OptimiserSettings& settings) {
+  for (const auto& [entryName, factory] : registry()) {
+    if (entryName == name) return factory(settings);
+  }
+  std::string valid;
+  for (const auto& entry : registry()) valid += (valid.empty() ? "" : ", ") + entry.first;
+  throw InputError("unknown optimiser '" + std::string(name) + "' (valid: " + valid + ")");
+}
+
+const std::vector<std::string>& optimiserNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> result;
+    for (const auto& entry : registry()) result.push_back(entry.first);
+    return result;
+  }();
+  return names;
+}
+
+}  // namespace clm3d

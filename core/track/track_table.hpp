@@ -1,0 +1,47 @@
+// The tracker's per-frame output as a table: one row per frame with its time, success,
+// confidence, selected view, head pose and the 2D landmarks. `clm3d track` writes it, `clm3d synth`
+// writes ground truth in the same columns, `clm3d eval` and the studio read both. CSV so that
+// spreadsheets, pandas and R read it directly (columns: docs/tracks-csv.md).
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/pose.hpp"
+
+namespace clm3d {
+
+struct TrackRow {
+  int frame = 0;           // 0-based frame index in the video
+  double timestamp = 0.0;  // seconds from the start of the video
+  bool success = false;    // the tracker believes the landmarks are on the face
+  double confidence = 0.0; // mean NCC of the landmarks' patches in [-1, 1]; 1 for ground truth
+  int view = -1;           // index of the model view used; -1 if none
+  std::optional<Pose> pose;  // absent when the frame has no fit
+  // 2 x n pixels (OpenCV convention, 0-based, pixel centres at integers); a NaN column is a
+  // landmark without a position (written as empty cells).
+  Eigen::Matrix2Xd points;
+};
+
+struct TrackTable {
+  int landmarkCount = 0;  // n: columns x_1..x_n, y_1..y_n
+  std::vector<TrackRow> rows;
+};
+
+// Columns, in order: frame, timestamp, success (0/1), confidence, view, tx, ty, tz, scale,
+// pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n. Missing values are empty cells. Written
+// atomically (temporary file, then rename). Throws Error if a row's point count is not
+// landmarkCount.
+void writeTrackTable(const std::filesystem::path& path, const TrackTable& table);
+std::string formatTrackTable(const TrackTable& table);
+
+// Reads a table written by writeTrackTable (or by another tool with the same header; column order
+// is taken from the header, extra columns are ignored). Throws InputError naming the file, the
+// line and the column for a missing column, a malformed number or a wrong cell count.
+TrackTable readTrackTable(const std::filesystem::path& path);
+TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
+
+}  // namespace clm3d
