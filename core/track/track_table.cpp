@@ -1,0 +1,296 @@
+#include "core/track/track_table.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <string_view>
+#include <system_error>
+#include <unordered_map>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/error.hpp"
+#include "core/scheme/text_scan.hpp"
+
+namespace clm3d {
+namespace {
+
+constexpr std::array<const char*, 7> kPoseColumns = {"tx",    "ty",  "tz",  "scale",
+                                                     "pitch", "yaw", "roll"};
+
+// Writes value with std::to_chars (locale-independent); NaN becomes an empty cell.
+void appendFixed(std::string& out, double value, int decimals) {
+  if (!std::isfinite(value)) return;
+  char buffer[64];
+  const auto [ptr, ec] =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
+  if (ec == std::errc()) {
+    out.append(buffer, ptr);
+  } else {
+    out += text::formatNumber(value);  // beyond 64 characters: shortest exact form instead
+  }
+}
+
+void appendGeneral(std::string& out, double value, int digits) {
+  if (!std::isfinite(value)) return;
+  char buffer[64];
+  const auto [ptr, ec] =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, digits);
+  out.append(buffer, ec == std::errc() ? ptr : buffer);
+}
+
+// The cells of one row, with where they came from for messages.
+class RowReader {
+ public:
+  RowReader(const std::string& source, int line, const std::vector<std::string_view>& cells,
+            const std::vector<std::string>& header)
+      : source_(source), line_(line), cells_(cells), header_(header) {}
+
+  std::string_view cell(int column) const { return cells_[static_cast<std::size_t>(column)]; }
+
+  [[noreturn]] void fail(int column, const std::string& what) const {
+    throwInputError(source_, "column " + header_[static_cast<std::size_t>(column)] + ": " + what,
+                    line_);
+  }
+
+  // A finite number or NaN ("nan" or an empty cell).
+  double number(int column) const {
+    const auto text = cell(column);
+    if (text.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const auto value = text::parseNumberOrNan(text);
+    if (!value) fail(column, "\"" + std::string(text) + "\" is not a number");
+    return *value;
+  }
+
+  int integer(int column, int minimum) const {
+    const auto text = cell(column);
+    if (text.empty()) fail(column, "empty cell, expected a whole number");
+    int value = 0;
+    const auto* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end) {
+      fail(column, "\"" + std::string(text) + "\" is not a whole number");
+    }
+    if (value < minimum) {
+      fail(column, std::to_string(value) + " is below " + std::to_string(minimum));
+    }
+    return value;
+  }
+
+  bool flag(int column) const {
+    const auto text = cell(column);
+    if (text == "1" || text == "true" || text == "True" || text == "TRUE") return true;
+    if (text == "0" || text == "false" || text == "False" || text == "FALSE") return false;
+    fail(column, "\"" + std::string(text) + "\" is not 0 or 1");
+  }
+
+ private:
+  const std::string& source_;
+  int line_;
+  const std::vector<std::string_view>& cells_;
+  const std::vector<std::string>& header_;
+};
+
+}  // namespace
+
+std::string formatTrackTable(const TrackTable& table) {
+  if (table.landmarkCount < 0) throw Error("track table: negative landmark count");
+  const int n = table.landmarkCount;
+  std::string out = "frame,timestamp,success,confidence,view";
+  for (const char* name : kPoseColumns) out += std::string(",") + name;
+  for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
+  for (int i = 1; i <= n; ++i) out += ",y_" + std::to_string(i);
+  out += '\n';
+
+  for (const auto& row : table.rows) {
+    if (row.points.cols() != n) {
+      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                  std::to_string(row.points.cols()) + " points, expected " + std::to_string(n));
+    }
+    out += std::to_string(row.frame);
+    out += ',';
+    appendFixed(out, row.timestamp, 6);
+    out += row.success ? ",1," : ",0,";
+    appendGeneral(out, row.confidence, 9);
+    out += ',' + std::to_string(row.view);
+    if (row.pose) {
+      const auto& pose = *row.pose;
+      const std::array<double, 7> values = {
+          pose.translation.x(), pose.translation.y(), pose.translation.z(), pose.scale,
+          degrees(pose.pitch),  degrees(pose.yaw),    degrees(pose.roll)};
+      for (const double value : values) {
+        out += ',';
+        appendGeneral(out, value, 9);
+      }
+    } else {
+      out += ",,,,,,,";
+    }
+    // A point counts as present only when both coordinates are finite; otherwise both cells are
+    // left empty, so a reader never sees half a point.
+    const auto present = [&](int i) {
+      return std::isfinite(row.points(0, i)) && std::isfinite(row.points(1, i));
+    };
+    for (int axis = 0; axis < 2; ++axis) {
+      for (int i = 0; i < n; ++i) {
+        out += ',';
+        if (present(i)) appendFixed(out, row.points(axis, i), 4);
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void writeTrackTable(const std::filesystem::path& path, const TrackTable& table) {
+  writeTextAtomically(path, formatTrackTable(table));
+}
+
+TrackTable parseTrackTable(const std::string& input, const std::string& sourceName) {
+  std::string_view text = input;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte-order mark
+  const auto lines = text::splitLines(text);
+  std::size_t next = 0;
+  while (next < lines.size() && text::trim(lines[next].text).empty()) ++next;
+  if (next >= lines.size()) {
+    throwInputError(sourceName, "empty file: expected a header line \"frame,timestamp,...\"");
+  }
+
+  // Header: every column by name, so other tools may order or add columns as they like.
+  const int headerLine = lines[next].number;
+  std::vector<std::string> header;
+  std::unordered_map<std::string, int> columnOf;
+  for (const auto cell : text::splitCommas(lines[next].text)) {
+    std::string name(cell);
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"') {
+      name = name.substr(1, name.size() - 2);  // a quoted header cell, as some tools write
+    }
+    if (!name.empty() && !columnOf.emplace(name, static_cast<int>(header.size())).second) {
+      throwInputError(sourceName, "column " + name + " appears twice in the header", headerLine);
+    }
+    header.push_back(name);
+  }
+  ++next;
+  const auto find = [&](const std::string& name) {
+    const auto it = columnOf.find(name);
+    return it == columnOf.end() ? -1 : it->second;
+  };
+  const auto require = [&](const std::string& name) {
+    const int column = find(name);
+    if (column < 0) throwInputError(sourceName, "missing column " + name, headerLine);
+    return column;
+  };
+
+  const int frameColumn = require("frame");
+  const int successColumn = require("success");
+  const int timestampColumn = find("timestamp");
+  const int confidenceColumn = find("confidence");
+  const int viewColumn = find("view");
+  // Pose columns: all seven or none.
+  std::array<int, 7> poseColumns{};
+  int poseFound = 0;
+  for (std::size_t k = 0; k < kPoseColumns.size(); ++k) {
+    poseColumns[k] = find(kPoseColumns[k]);
+    poseFound += poseColumns[k] >= 0 ? 1 : 0;
+  }
+  if (poseFound != 0 && poseFound != static_cast<int>(kPoseColumns.size())) {
+    for (std::size_t k = 0; k < kPoseColumns.size(); ++k) {
+      if (poseColumns[k] < 0) {
+        throwInputError(sourceName,
+                        std::string("missing column ") + kPoseColumns[k] +
+                            " (the pose needs tx, ty, tz, scale, pitch, yaw and roll)",
+                        headerLine);
+      }
+    }
+  }
+  const bool hasPose = poseFound != 0;
+
+  // Landmarks: x_1..x_n and y_1..y_n, n given by the longest unbroken run of either.
+  int n = 0;
+  while (find("x_" + std::to_string(n + 1)) >= 0 || find("y_" + std::to_string(n + 1)) >= 0) ++n;
+  if (n > text::kMaxLandmarkCount) {
+    throwInputError(sourceName, "too many landmark columns", headerLine);
+  }
+  std::vector<int> xColumns(static_cast<std::size_t>(n));
+  std::vector<int> yColumns(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    xColumns[static_cast<std::size_t>(i)] = require("x_" + std::to_string(i + 1));
+    yColumns[static_cast<std::size_t>(i)] = require("y_" + std::to_string(i + 1));
+  }
+
+  TrackTable table;
+  table.landmarkCount = n;
+  std::unordered_map<int, int> lineOfFrame;
+  for (; next < lines.size(); ++next) {
+    const auto& line = lines[next];
+    if (text::trim(line.text).empty()) continue;
+    const auto cells = text::splitCommas(line.text);
+    if (cells.size() != header.size()) {
+      throwInputError(sourceName,
+                      "expected " + std::to_string(header.size()) + " cells (as in the header), " +
+                          "found " + std::to_string(cells.size()),
+                      line.number);
+    }
+    const RowReader reader(sourceName, line.number, cells, header);
+    TrackRow row;
+    row.frame = reader.integer(frameColumn, 0);
+    if (const auto [it, inserted] = lineOfFrame.emplace(row.frame, line.number); !inserted) {
+      reader.fail(frameColumn, "frame " + std::to_string(row.frame) + " already appears on line " +
+                                   std::to_string(it->second));
+    }
+    row.success = reader.flag(successColumn);
+    row.timestamp = timestampColumn >= 0 ? reader.number(timestampColumn)
+                                         : std::numeric_limits<double>::quiet_NaN();
+    row.confidence = confidenceColumn >= 0 ? reader.number(confidenceColumn)
+                                           : std::numeric_limits<double>::quiet_NaN();
+    row.view =
+        viewColumn >= 0 && !reader.cell(viewColumn).empty() ? reader.integer(viewColumn, -1) : -1;
+
+    if (hasPose) {
+      std::array<double, 7> values{};
+      int missing = 0;
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        values[k] = reader.number(poseColumns[k]);
+        missing += std::isnan(values[k]) ? 1 : 0;
+      }
+      if (missing != 0 && missing != static_cast<int>(values.size())) {
+        for (std::size_t k = 0; k < values.size(); ++k) {
+          if (std::isnan(values[k])) {
+            reader.fail(poseColumns[k],
+                        "empty, but other pose cells are not (leave all seven empty for no pose)");
+          }
+        }
+      }
+      if (missing == 0) {
+        Pose pose;
+        pose.translation = Eigen::Vector3d(values[0], values[1], values[2]);
+        pose.scale = values[3];
+        pose.pitch = radians(values[4]);
+        pose.yaw = radians(values[5]);
+        pose.roll = radians(values[6]);
+        row.pose = pose;
+      }
+    }
+
+    row.points.resize(2, n);
+    for (int i = 0; i < n; ++i) {
+      const int xColumn = xColumns[static_cast<std::size_t>(i)];
+      const int yColumn = yColumns[static_cast<std::size_t>(i)];
+      const double x = reader.number(xColumn);
+      const double y = reader.number(yColumn);
+      if (std::isnan(x) != std::isnan(y)) {
+        reader.fail(std::isnan(x) ? xColumn : yColumn,
+                    "empty, but the other coordinate of the point is not");
+      }
+      row.points(0, i) = x;
+      row.points(1, i) = y;
+    }
+    table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
+TrackTable readTrackTable(const std::filesystem::path& path) {
+  return parseTrackTable(readTextFile(path), path.string());
+}
+
+}  // namespace clm3d

@@ -1,0 +1,201 @@
+// The tracks CSV table: column layout, round trip with missing poses and points, and the
+// messages for broken files (file, line and column named).
+#include "core/track/track_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/common/error.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+TrackTable sampleTable() {
+  TrackTable table;
+  table.landmarkCount = 3;
+  TrackRow first;
+  first.frame = 0;
+  first.timestamp = 0.0;
+  first.success = true;
+  first.confidence = 0.8123456789;
+  first.view = 4;
+  first.pose = Pose::fromDegrees(12.5, -33.25, 4.0, {1.5, -2.25, -812.125}, 1.0625);
+  first.points.resize(2, 3);
+  first.points << 1234.5678, 0.0, 3999.9999, 17.25, -3.5, 2048.0001;
+  table.rows.push_back(first);
+
+  TrackRow second;  // no fit: no pose, a missing point, a lost frame
+  second.frame = 2;
+  second.timestamp = 0.066667;
+  second.success = false;
+  second.confidence = -0.25;
+  second.view = -1;
+  second.points.resize(2, 3);
+  second.points << 10.0, kNan, 30.0, 11.0, kNan, 31.0;
+  table.rows.push_back(second);
+  return table;
+}
+
+TEST(TrackTable, HeaderAndCellsFollowTheDocumentedLayout) {
+  const auto text = formatTrackTable(sampleTable());
+  const auto firstBreak = text.find('\n');
+  EXPECT_EQ(text.substr(0, firstBreak),
+            "frame,timestamp,success,confidence,view,tx,ty,tz,scale,pitch,yaw,roll,"
+            "x_1,x_2,x_3,y_1,y_2,y_3");
+  // Angles in degrees, pixels with four decimals, seconds with six.
+  EXPECT_NE(text.find("\n0,0.000000,1,0.812345679,4,1.5,-2.25,-812.125,1.0625,12.5,-33.25,4,"
+                      "1234.5678,0.0000,3999.9999,17.2500,-3.5000,2048.0001\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\n2,0.066667,0,-0.25,-1,,,,,,,,10.0000,,30.0000,11.0000,,31.0000\n"),
+            std::string::npos)
+      << text;
+}
+
+TEST(TrackTable, RoundTripsIncludingMissingValues) {
+  const auto table = sampleTable();
+  test::TempDir dir;
+  const auto path = dir / "tracks.csv";
+  writeTrackTable(path, table);
+  const auto back = readTrackTable(path);
+
+  ASSERT_EQ(back.landmarkCount, 3);
+  ASSERT_EQ(back.rows.size(), 2u);
+  for (std::size_t r = 0; r < 2; ++r) {
+    const auto& a = table.rows[r];
+    const auto& b = back.rows[r];
+    EXPECT_EQ(b.frame, a.frame);
+    EXPECT_NEAR(b.timestamp, a.timestamp, 1e-7);
+    EXPECT_EQ(b.success, a.success);
+    EXPECT_NEAR(b.confidence, a.confidence, 1e-8);
+    EXPECT_EQ(b.view, a.view);
+    ASSERT_EQ(b.pose.has_value(), a.pose.has_value());
+    if (a.pose) {
+      EXPECT_NEAR((b.pose->translation - a.pose->translation).norm(), 0.0, 1e-9);
+      EXPECT_NEAR(b.pose->scale, a.pose->scale, 1e-12);
+      EXPECT_NEAR(b.pose->pitch, a.pose->pitch, 1e-9);
+      EXPECT_NEAR(b.pose->yaw, a.pose->yaw, 1e-9);
+      EXPECT_NEAR(b.pose->roll, a.pose->roll, 1e-9);
+    }
+    ASSERT_EQ(b.points.cols(), 3);
+    for (int i = 0; i < 3; ++i) {
+      for (int axis = 0; axis < 2; ++axis) {
+        if (std::isnan(a.points(axis, i))) {
+          EXPECT_TRUE(std::isnan(b.points(axis, i)));
+        } else {
+          EXPECT_NEAR(b.points(axis, i), a.points(axis, i), 5.1e-5);
+        }
+      }
+    }
+  }
+  // Written again, the text is identical: nothing drifts through a read.
+  EXPECT_EQ(formatTrackTable(back), formatTrackTable(table));
+}
+
+TEST(TrackTable, HalfMissingPointIsWrittenAsMissing) {
+  TrackTable table;
+  table.landmarkCount = 1;
+  TrackRow row;
+  row.points.resize(2, 1);
+  row.points << 5.0, kNan;
+  table.rows.push_back(row);
+  const auto back = parseTrackTable(formatTrackTable(table), "t.csv");
+  EXPECT_TRUE(std::isnan(back.rows[0].points(0, 0)));
+  EXPECT_TRUE(std::isnan(back.rows[0].points(1, 0)));
+}
+
+TEST(TrackTable, ReadsColumnsByNameInAnyOrderWithExtras) {
+  const std::string text =
+      "\xEF\xBB\xBFy_1,note,x_1,success,frame,x_2,y_2\r\n"
+      "2.5,hello,1.5,1,7,nan,nan\r\n"
+      "\r\n"
+      "4,,3,false,8,5,6\r\n";
+  const auto table = parseTrackTable(text, "other.csv");
+  ASSERT_EQ(table.landmarkCount, 2);
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.rows[0].frame, 7);
+  EXPECT_TRUE(table.rows[0].success);
+  EXPECT_EQ(table.rows[0].points(0, 0), 1.5);
+  EXPECT_EQ(table.rows[0].points(1, 0), 2.5);
+  EXPECT_TRUE(std::isnan(table.rows[0].points(0, 1)));
+  EXPECT_FALSE(table.rows[0].pose.has_value());
+  EXPECT_EQ(table.rows[0].view, -1);
+  EXPECT_FALSE(table.rows[1].success);
+  EXPECT_EQ(table.rows[1].points(1, 1), 6.0);
+}
+
+TEST(TrackTable, WriterRejectsRowsWithTheWrongPointCount) {
+  TrackTable table;
+  table.landmarkCount = 2;
+  table.rows.emplace_back();
+  table.rows.back().points.resize(2, 3);
+  EXPECT_THROW(formatTrackTable(table), Error);
+}
+
+std::string parseError(const std::string& text) {
+  try {
+    parseTrackTable(text, "tracks.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(TrackTable, BadInputsNameFileLineAndColumn) {
+  const std::string header = "frame,timestamp,success,confidence,view,x_1,y_1\n";
+  struct Case {
+    std::string text;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {"", "tracks.csv: empty file"},
+      {"\n  \n", "tracks.csv: empty file"},
+      {"timestamp,success,x_1,y_1\n", "tracks.csv:1: missing column frame"},
+      {"frame,success,x_1,y_1,x_2\n", "tracks.csv:1: missing column y_2"},
+      {"frame,success,x_1,y_1,tx,ty\n", "tracks.csv:1: missing column tz"},
+      {"frame,success,frame,x_1,y_1\n", "tracks.csv:1: column frame appears twice"},
+      {header + "0,0,1,0.5,0,1.5,abc\n", "tracks.csv:2: column y_1: \"abc\" is not a number"},
+      {header + "0,0,1,0.5,0,1.5\n", "tracks.csv:2: expected 7 cells (as in the header), found 6"},
+      {header + "0,0,1,0.5,0,1.5,2,9\n", "tracks.csv:2: expected 7 cells"},
+      {header + "0,0,1,0.5,0,1.5,2\n1.5,0,1,0.5,0,1,2\n",
+       "tracks.csv:3: column frame: \"1.5\" is not a whole number"},
+      {header + "-1,0,1,0.5,0,1,2\n", "tracks.csv:2: column frame: -1 is below 0"},
+      {header + "0,0,yes,0.5,0,1,2\n", "tracks.csv:2: column success: \"yes\" is not 0 or 1"},
+      {header + "0,0,1,0.5,0,,2\n", "tracks.csv:2: column x_1: empty, but the other"},
+      {header + "0,0,1,0.5,0,1,2\n0,0,1,0.5,0,1,2\n",
+       "tracks.csv:3: column frame: frame 0 already appears on line 2"},
+      {header + "0,0,1,inf,0,1,2\n", "tracks.csv:2: column confidence: \"inf\" is not a number"},
+      {"frame,success,tx,ty,tz,scale,pitch,yaw,roll,x_1,y_1\n0,1,1,2,,1,0,0,0,1,1\n",
+       "tracks.csv:2: column tz: empty, but other pose cells are not"},
+  };
+  for (const auto& c : cases) {
+    const auto message = parseError(c.text);
+    EXPECT_EQ(message.rfind(c.expected, 0), 0u)
+        << "input:\n"
+        << c.text << "\nmessage: " << message << "\nexpected start: " << c.expected;
+  }
+}
+
+TEST(TrackTable, MissingFileIsAnInputErrorNamingIt) {
+  test::TempDir dir;
+  try {
+    readTrackTable(dir / "absent.csv");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("absent.csv"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TrackTable, HeaderOnlyIsAnEmptyTable) {
+  const auto table = parseTrackTable(formatTrackTable(TrackTable{2, {}}), "t.csv");
+  EXPECT_EQ(table.landmarkCount, 2);
+  EXPECT_TRUE(table.rows.empty());
+}
+
+}  // namespace
+}  // namespace clm3d
