@@ -1,0 +1,92 @@
+// The landmark error of thesis eq. 5.1 and what is reported from it: for each ground-truth frame
+// the distance of every predicted point from its true position divided by the true inter-ocular
+// distance (the scheme's normalisation pair), the mean of those as the frame error, per-region
+// means (figure 5.13), the share of points within 0.18 (figure 5.12), the convergence rate and
+// the cumulative distribution of errors. Works on tables in memory; docs/evaluation.md explains
+// every choice.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/scheme/scheme.hpp"
+#include "core/track/track_table.hpp"
+
+namespace clm3d {
+
+struct EvalOptions {
+  // A point whose normalised error is at most this is "found"; a frame whose mean error is below
+  // it (and whose prediction exists and succeeded) has converged. Thesis figure 5.12: 0.18.
+  double threshold = 0.18;
+  // The cumulative distributions are sampled at 0, cdfStep, ..., cdfMax.
+  double cdfMax = 0.5;
+  double cdfStep = 0.01;
+};
+
+// One ground-truth frame.
+struct FrameError {
+  int frame = 0;
+  bool normalised = false;   // the truth has both normalisation points, apart (else not scored)
+  bool predicted = false;    // the prediction has a row for this frame
+  bool success = false;      // ... and that row says success
+  bool converged = false;    // predicted, success and error < threshold
+  double interOcular = 0.0;  // true distance of the normalisation pair, pixels
+  // Mean normalised error over the points present in both truth and prediction; NaN if none.
+  double error = 0.0;
+  // Per landmark, NaN where the truth or the prediction lacks the point.
+  std::vector<double> pointErrors;
+};
+
+struct RegionError {
+  std::string name;
+  RgbColour colour;
+  int points = 0;                // point errors pooled (over scored frames)
+  double mean = 0.0;             // NaN if points == 0
+  double sd = 0.0;               // sample SD of the pooled point errors
+  double withinThreshold = 0.0;  // found / true points of the region over normalised frames
+};
+
+struct CdfSample {
+  double threshold = 0.0;
+  double frames = 0.0;  // share of normalised truth frames with error <= threshold
+  double points = 0.0;  // share of true points (of normalised frames) with error <= threshold
+};
+
+struct ErrorSummary {
+  int truthFrames = 0;       // rows of the ground truth
+  int normalisedFrames = 0;  // of those, with a usable inter-ocular distance: the denominator
+  int predictedFrames = 0;   // normalised frames the prediction has a row for
+  int succeededFrames = 0;   // ... with success = 1
+  int scoredFrames = 0;      // ... with at least one point in common (any success value)
+  int convergedFrames = 0;
+  int extraPredictionRows = 0;  // prediction rows for frames the truth does not have (ignored)
+  // Frame errors of the scored frames.
+  double mean = 0.0, median = 0.0, sd = 0.0, min = 0.0, max = 0.0;
+  double convergenceRate = 0.0;      // convergedFrames / normalisedFrames
+  int truePoints = 0;                // points present in the truth over normalised frames
+  int foundPoints = 0;               // of those, predicted with error <= threshold
+  double withinThreshold = 0.0;      // foundPoints / truePoints
+  double meanPointError = 0.0;       // mean of every pooled point error (figure 5.13's line)
+  std::vector<RegionError> regions;  // in scheme order
+  std::vector<CdfSample> cdf;
+};
+
+struct SequenceEvaluation {
+  std::string label;               // a name for reports and legends
+  std::string source;              // where the prediction came from (its file), for reports
+  std::vector<FrameError> frames;  // one per truth row, in frame order
+  ErrorSummary summary;
+};
+
+// Throws InputError naming truthName if its landmark count differs from the scheme's or no truth
+// frame has a usable inter-ocular distance, and naming predictionName if its count differs from
+// the truth's.
+SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& prediction,
+                                    const Scheme& scheme, const EvalOptions& options = {},
+                                    const std::string& truthName = "ground truth",
+                                    const std::string& predictionName = "prediction");
+
+// The errors of the scored frames, in frame order (the sample the statistics compare).
+std::vector<double> scoredFrameErrors(const SequenceEvaluation& evaluation);
+
+}  // namespace clm3d
