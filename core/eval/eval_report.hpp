@@ -1,0 +1,58 @@
+// An evaluation of one or more trackers' outputs against one ground truth, as `clm3d eval` reports
+// it: each prediction's error summary, the significance test between them (Welch's t-test for two,
+// one-way ANOVA for three or more, on the per-frame errors), and the report as JSON (for scripts)
+// and as a short text summary (for people). The file-level function is the only one reading files.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/eval/landmark_error.hpp"
+#include "core/eval/statistics.hpp"
+#include "core/scheme/scheme.hpp"
+
+namespace clm3d {
+
+struct Comparison {
+  enum class Kind { None, Welch, Anova };
+  Kind kind = Kind::None;
+  WelchTTest welch;  // when kind == Welch (first prediction is "a")
+  Anova anova;       // when kind == Anova
+  // Why no test was computed (empty when one was, or when there is only one prediction).
+  std::string note;
+};
+
+struct EvaluationReport {
+  std::string schemeName;
+  std::string truthSource;
+  EvalOptions options;
+  std::vector<SequenceEvaluation> sequences;
+  Comparison comparison;
+};
+
+// Two sequences: Welch's t-test; three or more: one-way ANOVA; over scoredFrameErrors(). When the
+// data cannot be tested (too few frames, no spread) the kind is None and note says why.
+Comparison compareSequences(const std::vector<SequenceEvaluation>& sequences);
+
+// Reads the ground truth and each prediction (tracks CSV), evaluates and compares them. labels
+// name the predictions (empty, or one per prediction; default: the file name without extension).
+// InputError names the file at fault.
+EvaluationReport evaluateTrackFiles(const std::filesystem::path& truth,
+                                    const std::vector<std::filesystem::path>& predictions,
+                                    const std::vector<std::string>& labels, const Scheme& scheme,
+                                    const EvalOptions& options = {});
+
+// {"format": "clm3d-evaluation", "version": 1, "scheme", "truth", "threshold", "predictions": [
+// {"label", "file", "frames": {...}, "error": {mean, median, sd, min, max}, "convergence_rate",
+// "points_within_threshold", "mean_point_error", "regions": [...], "cdf": [...], "per_frame":
+// [{"frame", "error", "success", "converged"}]}], "comparison": {...} or null}. NaN is null.
+std::string formatReportJson(const EvaluationReport& report);
+// Written atomically.
+void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
+
+// A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
+// threshold, per-region means; then the test.
+std::string formatReportText(const EvaluationReport& report);
+
+}  // namespace clm3d
