@@ -121,6 +121,7 @@ TEST(EvalPlots, ManyRegionsWidenTheBarChart) {
   for (int k = 0; k < 4; ++k) sequences.push_back(evaluateSequence(truth, prediction, scheme));
   const auto image = plotRegionErrors(sequences);
   expectGoodPlot(image, 960);
+  EXPECT_GT(image.cols, plotRegionErrors(twoSequences()).cols);  // wider than for thesis25
 }
 
 TEST(EvalPlots, WritesThreeReadablePngs) {
