@@ -25,7 +25,7 @@ struct FitSettings {
   std::string optimiser = "fastncc";
   OptimiserSettings optimiserSettings;
   int scales = 0;                // pyramid scales searched, finest n; 0 = all of the model's
-  int maxIterations = 6;         // per scale
+  int maxIterations = 4;         // per scale (the thesis used at most 4)
   double tolerancePixels = 0.1;  // converged when no point moves more (level pixels)
   bool alphaMask = true;         // alpha masking of template and image patches
   double viewHysteresisDeg = 5.0;

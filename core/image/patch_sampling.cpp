@@ -41,10 +41,34 @@ void samplePatch(const cv::Mat& image, const Eigen::Vector2d& centre, int size,
     throw std::invalid_argument("samplePatch: the output must hold size * size values");
   }
   const double half = (size - 1) / 2.0;
+  const double left = centre.x() - half;
+  const double top = centre.y() - half;
+  // Samples are whole pixels apart, so every sample has the same fractional offsets. When the
+  // patch and its right/bottom neighbours lie inside the image, interpolate with fixed weights
+  // and no clamping (the fitter's inner loop); otherwise fall back to the clamped form.
+  if (std::isfinite(left) && std::isfinite(top) && left >= 0.0 && top >= 0.0 &&
+      left + size < image.cols && top + size < image.rows) {
+    const int x0 = static_cast<int>(left);
+    const int y0 = static_cast<int>(top);
+    const float fx = static_cast<float>(left - x0);
+    const float fy = static_cast<float>(top - y0);
+    const float w00 = (1.0f - fx) * (1.0f - fy), w01 = fx * (1.0f - fy);
+    const float w10 = (1.0f - fx) * fy, w11 = fx * fy;
+    float* target = out.data();
+    for (int r = 0; r < size; ++r) {
+      const float* row0 = image.ptr<float>(y0 + r) + x0;
+      const float* row1 = image.ptr<float>(y0 + r + 1) + x0;
+      for (int c = 0; c < size; ++c) {
+        target[r * size + c] =
+            w00 * row0[c] + w01 * row0[c + 1] + w10 * row1[c] + w11 * row1[c + 1];
+      }
+    }
+    return;
+  }
   for (int r = 0; r < size; ++r) {
-    const double y = centre.y() + r - half;
+    const double y = top + r;
     for (int c = 0; c < size; ++c) {
-      out[r * size + c] = bilinear(image, centre.x() + c - half, y);
+      out[r * size + c] = bilinear(image, left + c, y);
     }
   }
 }

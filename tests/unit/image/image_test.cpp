@@ -91,6 +91,22 @@ TEST(PatchSampling, BorderIsReplicated) {
   EXPECT_FLOAT_EQ(sampleBilinear(image, 20.0, 20.0), 99.0f);
 }
 
+TEST(PatchSampling, InteriorFastPathAgreesWithPointSampling) {
+  cv::Mat image(40, 50, CV_32F);
+  cv::randu(image, 0.0f, 1.0f);
+  for (const Eigen::Vector2d& centre :
+       {Eigen::Vector2d(20.3, 17.8), Eigen::Vector2d(9.5, 9.5), Eigen::Vector2d(40.01, 30.99),
+        Eigen::Vector2d(3.2, 35.0)}) {
+    const Eigen::VectorXf patch = samplePatch(image, centre, 12);
+    for (int r = 0; r < 12; ++r) {
+      for (int c = 0; c < 12; ++c) {
+        EXPECT_NEAR(patch[r * 12 + c],
+                    sampleBilinear(image, centre.x() + c - 5.5, centre.y() + r - 5.5), 1e-5f);
+      }
+    }
+  }
+}
+
 TEST(PatchSampling, RejectsBadInput) {
   Eigen::VectorXf out(9);
   EXPECT_THROW(samplePatch(cv::Mat(), {0, 0}, 3, out), std::invalid_argument);
