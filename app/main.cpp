@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addDemoCommand(app);
   clm3d::cli::addInfoCommand(app);
   clm3d::cli::addTrainCommand(app);
+  clm3d::cli::addSynthCommand(app);
   clm3d::cli::addEvalCommand(app);
 
   try {

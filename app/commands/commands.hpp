@@ -12,6 +12,7 @@ void addLandmarksCommand(CLI::App& root);
 void addDemoCommand(CLI::App& root);
 void addInfoCommand(CLI::App& root);
 void addTrainCommand(CLI::App& root);
+void addSynthCommand(CLI::App& root);
 void addEvalCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

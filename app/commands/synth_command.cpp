@@ -1,0 +1,373 @@
+// clm3d synth: renders a synthetic test sequence (thesis section 5.2) of a textured scan or a
+// procedural head turning a fixed number of degrees per frame, and writes the video, the exact
+// ground truth, the per-frame landmark visibility and a description of how it was made. All work is
+// done by core (eval/synthetic_sequence, synth, mesh, dataset/model_frame). Ctrl-C cancels cleanly.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "app/commands/commands.hpp"
+#include "core/common/error.hpp"
+#include "core/dataset/axis_name.hpp"
+#include "core/dataset/model_frame.hpp"
+#include "core/eval/synthetic_sequence.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/mesh/mesh_transform.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/synth/synth_head.hpp"
+
+namespace clm3d::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<CancelToken*> gCancel{nullptr};
+
+extern "C" void onSynthInterrupt(int) {
+  if (CancelToken* token = gCancel.load()) token->cancel();
+}
+
+struct SynthArgs {
+  fs::path out;
+  fs::path mesh;
+  fs::path landmarks;
+  std::optional<std::uint64_t> headSeed;
+  std::string expression;
+  int textureSize = 1024;
+  double faceStep = SynthOptions{}.faceStepDegrees;
+  std::string up = "+y";
+  std::string front = "+z";
+  std::string yawRange = "0:60";
+  std::string pitchRange = "0";
+  double roll = 0.0;
+  double step = 1.0;
+  bool sweep = false;
+  std::string size = "640x480";
+  double faceSize = SequenceSettings{}.interOcularPixels;
+  double fov = kDefaultVerticalFovDeg;
+  double fps = SequenceSettings{}.fps;
+  int supersample = SequenceSettings{}.supersample;
+  fs::path background;
+  std::string format = "avi";
+};
+
+// "A:B" or "A" (= "A:A"), degrees; nullopt if malformed.
+std::optional<std::pair<double, double>> parseRange(const std::string& text) {
+  const auto number = [](const std::string& s) -> std::optional<double> {
+    if (s.empty()) return std::nullopt;
+    std::size_t used = 0;
+    try {
+      const double value = std::stod(s, &used);
+      if (used != s.size() || !std::isfinite(value)) return std::nullopt;
+      return value;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    const auto value = number(text);
+    if (!value) return std::nullopt;
+    return std::make_pair(*value, *value);
+  }
+  const auto from = number(text.substr(0, colon));
+  const auto to = number(text.substr(colon + 1));
+  if (!from || !to) return std::nullopt;
+  return std::make_pair(*from, *to);
+}
+
+CLI::Validator rangeValidator(double limit) {
+  return CLI::Validator(
+      [limit](std::string& text) -> std::string {
+        const auto range = parseRange(text);
+        if (!range) return "expected FROM:TO in degrees (e.g. 0:60 or -30:30), got '" + text + "'";
+        if (std::abs(range->first) > limit || std::abs(range->second) > limit) {
+          std::ostringstream message;
+          message << "angles must be within -" << limit << ".." << limit << " degrees, got '"
+                  << text << "'";
+          return message.str();
+        }
+        return {};
+      },
+      "FROM:TO");
+}
+
+// "640x480" -> (640, 480); nullopt if malformed.
+std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return std::nullopt;
+  try {
+    std::size_t usedWidth = 0;
+    std::size_t usedHeight = 0;
+    const int width = std::stoi(text.substr(0, x), &usedWidth);
+    const int height = std::stoi(text.substr(x + 1), &usedHeight);
+    if (usedWidth != x || usedHeight != text.size() - x - 1) return std::nullopt;
+    return std::make_pair(width, height);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+CLI::Validator sizeValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto size = parseSize(text);
+        if (!size) return "expected WIDTHxHEIGHT, e.g. 640x480, got '" + text + "'";
+        const auto [width, height] = *size;
+        if (width < 16 || height < 16 || width > 8192 || height > 8192) {
+          return "each side must be 16..8192 pixels, got '" + text + "'";
+        }
+        if (width % 2 != 0 || height % 2 != 0) {
+          return "width and height must be even (video codecs need it), got '" + text + "'";
+        }
+        return {};
+      },
+      "WxH");
+}
+
+struct Subject {
+  TexturedMesh mesh;
+  LandmarkSet landmarks;
+  SequenceSubject description;
+  std::string name;
+};
+
+// A scan in model coordinates, exactly as the trainer loads scans (core/dataset): landmarks read
+// in the thesis25 scheme (68-point files converted), levelled on the eye centres, landmark 1 at
+// the origin.
+Subject loadScan(const SynthArgs& args) {
+  const auto up = axisFromName(args.up);
+  const auto front = axisFromName(args.front);
+  if (!up) throw CLI::ValidationError("--up", "expected an axis such as +y or -z");
+  if (!front) throw CLI::ValidationError("--front", "expected an axis such as +z or -y");
+  if (up->dot(*front) != 0.0) throw CLI::ValidationError("--up/--front", "the axes must differ");
+  Subject subject;
+  subject.mesh = loadTexturedMesh(args.mesh);
+  const LandmarkSet landmarks = readLandmarks(args.landmarks, &Scheme::thesis25());
+  std::string why;
+  const auto frame = modelFrame(landmarks, Scheme::thesis25(), *up, *front, true, why);
+  if (!frame) throwInputError(args.landmarks, why);
+  transformMesh(subject.mesh, frame->rotation, -(frame->rotation * frame->origin));
+  subject.landmarks = applyFrame(*frame, landmarks);
+  subject.description.mesh = args.mesh.string();
+  subject.description.landmarks = args.landmarks.string();
+  subject.name = args.mesh.filename().string();
+  return subject;
+}
+
+Subject makeHead(const SynthArgs& args) {
+  const std::string expression = args.expression.empty() ? "neutral" : args.expression;
+  SynthOptions options;
+  options.textureSize = args.textureSize;
+  options.faceStepDegrees = args.faceStep;
+  SynthHead head = generateHead(*args.headSeed, Expression::preset(expression), options);
+  Subject subject;
+  subject.mesh = std::move(head.mesh);
+  subject.landmarks = std::move(head.landmarks);
+  subject.description.headSeed = args.headSeed;
+  subject.description.expression = expression;
+  subject.description.faceStepDegrees = options.faceStepDegrees;
+  subject.description.textureSize = options.textureSize;
+  subject.name = "procedural head " + std::to_string(*args.headSeed) + " (" + expression + ")";
+  return subject;
+}
+
+SequenceSettings toSettings(const SynthArgs& args) {
+  SequenceSettings settings;
+  const auto yaw = parseRange(args.yawRange);
+  const auto pitch = parseRange(args.pitchRange);
+  const auto size = parseSize(args.size);
+  if (!size) throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 640x480");
+  settings.yawFromDeg = yaw->first;
+  settings.yawToDeg = yaw->second;
+  settings.pitchFromDeg = pitch->first;
+  settings.pitchToDeg = pitch->second;
+  settings.rollDeg = args.roll;
+  settings.stepDeg = args.step;
+  settings.order = args.sweep ? SequenceOrder::Sweep : SequenceOrder::Range;
+  settings.width = size->first;
+  settings.height = size->second;
+  settings.interOcularPixels = args.faceSize;
+  settings.verticalFovDeg = args.fov;
+  settings.fps = args.fps;
+  settings.supersample = args.supersample;
+  settings.backgroundImage = args.background;
+  settings.validate();
+  return settings;
+}
+
+void runSynth(const SynthArgs& args) {
+  const bool scan = !args.mesh.empty() || !args.landmarks.empty();
+  if (scan && args.headSeed) {
+    throw CLI::ValidationError("--head-seed",
+                               "give either --mesh and --landmarks (a scan) or --head-seed (a "
+                               "procedural head), not both");
+  }
+  if (!scan && !args.headSeed) {
+    throw CLI::ValidationError("--mesh/--head-seed",
+                               "give --mesh and --landmarks (a scan) or --head-seed N (a "
+                               "procedural head)");
+  }
+  if (scan && (args.mesh.empty() || args.landmarks.empty())) {
+    throw CLI::ValidationError("--mesh/--landmarks", "a scan needs both --mesh and --landmarks");
+  }
+  if (scan && !args.expression.empty()) {
+    throw CLI::ValidationError("--expression",
+                               "applies to procedural heads (--head-seed) only; a scan has the "
+                               "expression it was captured with");
+  }
+  const SequenceSettings settings = toSettings(args);
+  // Inputs that are quick to check, before the slow part (generating or loading the head).
+  if (!args.background.empty() && !fs::exists(args.background)) {
+    throwInputError(args.background, "file not found");
+  }
+  const int frames = static_cast<int>(sequenceAngles(settings).size());
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const Subject subject = scan ? loadScan(args) : makeHead(args);
+  const double loadSeconds = elapsed();
+
+  CancelToken token;
+  gCancel = &token;
+  const auto previous = std::signal(SIGINT, onSynthInterrupt);
+  std::mutex printMutex;
+  int lastDecile = 0;
+  const bool showProgress = frames >= 30;
+  const auto progress = [&](double fraction, std::string_view stage) {
+    if (!showProgress) return;
+    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
+    std::lock_guard lock(printMutex);
+    if (decile <= lastDecile) return;
+    lastDecile = decile;
+    const double seconds = elapsed() - loadSeconds;
+    std::ostringstream line;
+    line << "synth: " << std::setw(3) << decile * 10 << "% " << stage << ", " << std::fixed
+         << std::setprecision(1) << seconds << " s";
+    if (fraction < 1.0) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
+    std::cerr << line.str() << '\n';
+  };
+  const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
+  SequenceSummary summary;
+  try {
+    summary = writeSyntheticSequence(subject.mesh, subject.landmarks, Scheme::thesis25(), settings,
+                                     subject.description, files, progress, &token);
+  } catch (const Cancelled&) {
+    std::signal(SIGINT, previous);
+    gCancel = nullptr;
+    throw Error("cancelled, no sequence written");
+  } catch (...) {
+    std::signal(SIGINT, previous);
+    gCancel = nullptr;
+    throw;
+  }
+  std::signal(SIGINT, previous);
+  gCancel = nullptr;
+  const double renderSeconds = elapsed() - loadSeconds;
+
+  std::ostringstream angles;
+  angles << "yaw " << settings.yawFromDeg << ".." << settings.yawToDeg;
+  if (settings.pitchFromDeg != settings.pitchToDeg) {
+    angles << ", pitch " << settings.pitchFromDeg << ".." << settings.pitchToDeg;
+  } else if (settings.pitchFromDeg != 0.0) {
+    angles << ", pitch " << settings.pitchFromDeg;
+  }
+  angles << (settings.order == SequenceOrder::Sweep ? " (sweep from and back to frontal)" : "")
+         << ", step " << settings.stepDeg << " deg";
+  std::cout << "synth: " << summary.frames << " frames " << settings.width << "x" << settings.height
+            << " of " << subject.name << ", " << angles.str() << ", face "
+            << settings.interOcularPixels << " px, " << summary.hiddenPoints
+            << " hidden landmark-frames -> " << files.video.string() << " (+ truth.csv, "
+            << "truth-visibility.csv, sequence.json) in " << std::fixed << std::setprecision(1)
+            << renderSeconds << " s (" << summary.frames / std::max(renderSeconds, 1e-9)
+            << " frames/s)\n";
+}
+
+}  // namespace
+
+void addSynthCommand(CLI::App& root) {
+  auto args = std::make_shared<SynthArgs>();
+  CLI::App* cmd = root.add_subcommand(
+      "synth",
+      "Render a synthetic test sequence (thesis 5.2): a head turning step degrees per frame, with "
+      "exact ground-truth landmarks and their visibility");
+  cmd->add_option("--out", args->out,
+                  "Output folder: sequence.avi (or .mp4), truth.csv, truth-visibility.csv, "
+                  "sequence.json")
+      ->required();
+  cmd->add_option("--mesh", args->mesh, "Textured scan: OBJ (+MTL, image), PLY, glTF/GLB");
+  cmd->add_option("--landmarks", args->landmarks,
+                  "The scan's 3D landmarks (.pts/.ljson/.csv, 25 thesis or 68 iBUG points)");
+  cmd->add_option("--up", args->up, "The scan file's up axis")->capture_default_str();
+  cmd->add_option("--front", args->front, "The scan file's axis out of the face")
+      ->capture_default_str();
+  cmd->add_option("--head-seed", args->headSeed,
+                  "Use the procedural head of this seed instead of a scan");
+  std::string names;
+  for (const auto& name : expressionPresetNames()) names += (names.empty() ? "" : ", ") + name;
+  cmd->add_option("--expression", args->expression,
+                  "Procedural head's expression: " + names + " (default neutral)");
+  cmd->add_option("--texture-size", args->textureSize, "Procedural head's texture size")
+      ->check(CLI::Range(256, 8192))
+      ->capture_default_str();
+  cmd->add_option("--face-step", args->faceStep, "Procedural head's mesh step in degrees")
+      ->check(CLI::Range(0.3, 3.0))
+      ->capture_default_str();
+  cmd->add_option("--yaw-range", args->yawRange,
+                  "Yaw FROM:TO in degrees, either direction (positive: nose towards image +x); "
+                  "write --yaw-range=-60:0 for a negative start")
+      ->check(rangeValidator(180.0))
+      ->capture_default_str();
+  cmd->add_option("--pitch-range", args->pitchRange,
+                  "Pitch FROM:TO in degrees (positive: nose down), or one fixed value")
+      ->check(rangeValidator(90.0))
+      ->capture_default_str();
+  cmd->add_option("--roll", args->roll, "Fixed roll in degrees")
+      ->check(CLI::Range(-180.0, 180.0))
+      ->capture_default_str();
+  cmd->add_option("--step", args->step,
+                  "Degrees per frame (the larger of the yaw and pitch change)")
+      ->check(CLI::Range(0.01, 90.0))
+      ->capture_default_str();
+  cmd->add_flag("--sweep", args->sweep,
+                "Go frontal -> FROM -> TO -> frontal instead of FROM -> TO");
+  cmd->add_option("--size", args->size, "Image size WIDTHxHEIGHT (even)")
+      ->check(sizeValidator())
+      ->capture_default_str();
+  cmd->add_option("--face-size", args->faceSize,
+                  "Distance between the eye centres in the frontal view, pixels")
+      ->check(CLI::Range(4.0, 8000.0))
+      ->capture_default_str();
+  cmd->add_option("--fov", args->fov, "Vertical field of view in degrees")
+      ->check(CLI::Range(1.0, 150.0))
+      ->capture_default_str();
+  cmd->add_option("--fps", args->fps, "Frame rate written into the video")
+      ->check(CLI::Range(0.1, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--supersample", args->supersample,
+                  "Render at N times the size and average down (anti-aliasing)")
+      ->check(CLI::Range(1, 4))
+      ->capture_default_str();
+  cmd->add_option("--background", args->background,
+                  "Background image (scaled to cover the frame); default plain grey");
+  cmd->add_option("--format", args->format,
+                  "Video format: avi or mkv (FFV1, lossless), mp4 (MPEG-4, lossy)")
+      ->check(CLI::IsMember({"avi", "mkv", "mp4"}))
+      ->capture_default_str();
+  cmd->callback([args] { runSynth(*args); });
+}
+
+}  // namespace clm3d::cli
