@@ -1,0 +1,88 @@
+// Tracking (thesis section 4.3): each frame is searched from the previous frame's result; a frame
+// whose fit looks wrong (low confidence, implausible shape, face leaving the image) is marked as
+// failed and the face is detected again, in the same frame and from then on until a fit succeeds.
+// Safe on a worker thread: trackVideo reports progress and stops on its cancel token.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/common/progress.hpp"
+#include "core/detect/face_detector.hpp"
+#include "core/fit/fitter.hpp"
+#include "core/track/track_table.hpp"
+
+namespace clm3d {
+
+struct TrackerSettings {
+  FitSettings fit;
+  DetectorKind detector = DetectorKind::Cascade;
+  double minConfidence = 0.35;    // mean NCC below this marks the frame as failed
+  double maxShapeDistance = 4.0;  // Mahalanobis distance of b_s (in SD) beyond which the shape is
+                                  // implausible
+  double minInterOcularPixels = 8.0;  // a smaller face is a lost track
+};
+
+// Why a frame failed (or None).
+enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
+const char* toString(TrackFailure failure);
+
+struct TrackStep {
+  TrackRow row;
+  std::optional<FitResult> fit;  // absent when no face was found
+  TrackFailure failure = TrackFailure::None;
+  bool detected = false;         // this frame started from a detection
+  double fitMilliseconds = 0.0;  // the search alone (no detection, no decoding)
+};
+
+class Tracker {
+ public:
+  Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings = {});
+  ~Tracker();
+
+  // Tracks one frame (BGR or grey, the camera's size).
+  TrackStep track(const cv::Mat& frame, int index, double timestamp);
+  // Forget the previous frame: the next frame starts from a detection.
+  void reset();
+  // Start the next frame from this state (a hand-corrected frame, or --init points).
+  void setState(const FitState& state, int view = -1);
+
+  Fitter& fitter() { return fitter_; }
+  const TrackerSettings& settings() const { return settings_; }
+
+ private:
+  TrackFailure judge(const FitResult& fit) const;
+  FaceDetector& detector();
+
+  const ClmModel* model_;
+  Camera camera_;
+  TrackerSettings settings_;
+  Fitter fitter_;
+  std::unique_ptr<FaceDetector> detector_;
+  std::optional<FitState> state_;
+  int view_ = -1;
+};
+
+struct TrackSummary {
+  int frames = 0;
+  int succeeded = 0;
+  int detections = 0;
+  std::vector<double> fitMilliseconds;  // per fitted frame
+  double medianMilliseconds() const;
+  double percentileMilliseconds(double share) const;
+};
+
+// Tracks every frame of a video into `table` (rows in frame order). perFrame (optional) sees each
+// frame with its step, e.g. to draw the overlay. Progress stage "tracking". Throws InputError for
+// an unreadable video, Cancelled when cancelled (the rows so far stay in `table`).
+TrackSummary trackVideo(
+    const std::filesystem::path& video, const ClmModel& model, const TrackerSettings& settings,
+    TrackTable& table,
+    const std::function<void(const cv::Mat&, const TrackStep&, Tracker&)>& perFrame = {},
+    const ProgressCallback& progress = {}, const CancelToken* cancel = nullptr,
+    std::optional<FitState> initial = std::nullopt);
+
+}  // namespace clm3d
