@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   clm3d::cli::addTrainCommand(app);
   clm3d::cli::addSynthCommand(app);
   clm3d::cli::addEvalCommand(app);
+  clm3d::cli::addFitCommand(app);
+  clm3d::cli::addTrackCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -14,5 +14,7 @@ void addInfoCommand(CLI::App& root);
 void addTrainCommand(CLI::App& root);
 void addSynthCommand(CLI::App& root);
 void addEvalCommand(CLI::App& root);
+void addFitCommand(CLI::App& root);
+void addTrackCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

@@ -1,0 +1,28 @@
+// The search options `clm3d fit` and `clm3d track` share (optimiser, scales, iterations, alpha
+// masks, camera field of view, detector), declared once so both commands spell them the same.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "core/detect/face_detector.hpp"
+#include "core/fit/fitter.hpp"
+
+namespace clm3d::cli {
+
+struct FitOptions {
+  std::string optimiser = "fastncc";
+  int scales = 0;
+  int iterations = 4;
+  bool noAlpha = false;
+  double fovDeg = 40.0;
+  std::string detector = "cascade";
+  std::uint64_t seed = 1;
+
+  FitSettings settings() const;
+  DetectorKind detectorKind() const;  // InputError for an unknown name
+};
+
+void addFitOptions(CLI::App& command, FitOptions& options);
+
+}  // namespace clm3d::cli

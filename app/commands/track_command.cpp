@@ -1,0 +1,145 @@
+// clm3d track: tracks the landmarks through a video (each frame from the previous one, with
+// failure detection and re-detection), writes the per-frame CSV (docs/tracks-csv.md) and
+// optionally the overlay video with the landmarks and synthetic patches drawn in place. Progress
+// goes to stderr; Ctrl-C stops cleanly and keeps the frames tracked so far.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "app/commands/commands.hpp"
+#include "app/commands/fit_options.hpp"
+#include "core/common/error.hpp"
+#include "core/detect/initialisation.hpp"
+#include "core/model/model_file.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/track/fit_overlay.hpp"
+#include "core/track/tracker.hpp"
+#include "core/video/video_reader.hpp"
+#include "core/video/video_writer.hpp"
+
+namespace clm3d::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<CancelToken*> gCancel{nullptr};
+
+extern "C" void onTrackInterrupt(int) {
+  if (CancelToken* token = gCancel.load()) token->cancel();
+}
+
+struct TrackArgs {
+  fs::path model, video, out, overlay, init;
+  FitOptions fit;
+  double minConfidence = TrackerSettings{}.minConfidence;
+  bool quiet = false;
+};
+
+void runTrack(const TrackArgs& args) {
+  const ClmModel model = loadModel(args.model);
+  const Scheme scheme = model.scheme();
+  TrackerSettings settings;
+  settings.fit = args.fit.settings();
+  settings.detector = args.fit.detectorKind();
+  settings.minConfidence = args.minConfidence;
+
+  std::optional<FitState> initial;
+  std::unique_ptr<VideoWriter> overlay;
+  {
+    VideoReader probe(args.video);  // fails early, naming the file, if it is not a video
+    const Camera camera = Camera::fromVerticalFov(probe.width(), probe.height(), args.fit.fovDeg);
+    if (!args.init.empty()) {
+      const LandmarkSet given = readLandmarks(args.init, &scheme);
+      Eigen::Matrix2Xd points(2, given.size());
+      std::vector<bool> present(static_cast<std::size_t>(given.size()));
+      for (int i = 0; i < given.size(); ++i) {
+        present[static_cast<std::size_t>(i)] = given.has(i);
+        points.col(i) =
+            given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
+      }
+      initial = stateFromPoints(model, camera, points, present);
+    }
+    if (!args.overlay.empty()) {
+      overlay =
+          std::make_unique<VideoWriter>(args.overlay, probe.width(), probe.height(), probe.fps());
+    }
+  }
+
+  CancelToken token;
+  gCancel = &token;
+  const auto previous = std::signal(SIGINT, onTrackInterrupt);
+  const auto begin = std::chrono::steady_clock::now();
+  auto lastReport = begin;
+  TrackTable table;
+  const auto progress = [&](double fraction, std::string_view) {
+    const auto now = std::chrono::steady_clock::now();
+    if (args.quiet || (now - lastReport < std::chrono::seconds(1) && fraction < 1.0)) return;
+    lastReport = now;
+    std::cerr << "\rtracking: " << std::fixed << std::setprecision(1) << 100.0 * fraction << "% ("
+              << table.rows.size() << " frames)" << std::flush;
+  };
+  const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
+    if (!overlay) return;
+    cv::Mat drawn = frame.clone();
+    drawFitOverlay(drawn, step, tracker.fitter(), scheme);
+    overlay->write(drawn);
+  };
+  TrackSummary summary;
+  bool cancelled = false;
+  try {
+    summary = trackVideo(args.video, model, settings, table, perFrame, progress, &token, initial);
+  } catch (const Cancelled&) {
+    cancelled = true;
+  }
+  std::signal(SIGINT, previous);
+  gCancel = nullptr;
+  if (!args.quiet) std::cerr << '\n';
+  writeTrackTable(args.out, table);
+  if (overlay) overlay->close();
+  if (cancelled) {
+    throw InputError("cancelled after " + std::to_string(table.rows.size()) +
+                     " frames; those are in " + args.out.string());
+  }
+
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  std::cout << std::fixed << std::setprecision(1) << "tracked " << summary.frames << " frames of "
+            << args.video.string() << " in " << seconds << " s: " << summary.succeeded
+            << " succeeded (" << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0)
+            << "%), " << summary.detections << " detections\n"
+            << std::setprecision(2) << "fit time per frame: median " << summary.medianMilliseconds()
+            << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
+            << args.fit.optimiser << ", "
+            << (args.fit.scales > 0 ? std::to_string(args.fit.scales) : std::string("all"))
+            << " scales)\n"
+            << "tracks: " << args.out.string() << '\n';
+  if (overlay) std::cout << "overlay: " << args.overlay.string() << '\n';
+}
+
+}  // namespace
+
+void addTrackCommand(CLI::App& root) {
+  auto args = std::make_shared<TrackArgs>();
+  CLI::App* command = root.add_subcommand("track", "track the landmarks through a video");
+  command->add_option("--model", args->model, "trained model (.clm3d)")->required();
+  command->add_option("--video", args->video, "video to track")->required();
+  command->add_option("--out", args->out, "per-frame tracks (.csv, see docs/tracks-csv.md)")
+      ->required();
+  command->add_option("--overlay", args->overlay,
+                      "also write the video with the landmarks and patches drawn (.mp4, .avi)");
+  command->add_option("--init", args->init, "start the first frame from these points");
+  command
+      ->add_option("--min-confidence", args->minConfidence,
+                   "mean NCC below which a frame counts as failed and the face is re-detected")
+      ->capture_default_str();
+  command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  addFitOptions(*command, args->fit);
+  command->callback([args] { runTrack(*args); });
+}
+
+}  // namespace clm3d::cli
