@@ -149,6 +149,12 @@ void addTrainCommand(CLI::App& root) {
                    "At most this many modes per patch PCA (0 = no cap; smaller models)")
       ->default_val(0)
       ->check(CLI::Range(0, 1000));
+  command
+      ->add_option("--hidden-share", args->settings.hiddenShare,
+                   "A landmark hidden in more than this share of a view's renders is left out of "
+                   "the view (1 = keep every landmark: hidden-point removal off)")
+      ->default_val(0.5)
+      ->check(CLI::Range(0.0, 1.0));
   command->callback([args] { runTrain(*args); });
 }
 

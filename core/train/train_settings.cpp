@@ -37,7 +37,8 @@ void TrainSettings::validate() const {
   require(textureVariance > 0 && textureVariance <= 1, "texture variance must be in (0, 1]");
   require(shape.varianceKept > 0 && shape.varianceKept <= 1, "shape variance must be in (0, 1]");
   require(textureMaxModes >= 0, "texture max modes must be >= 0");
-  require(hiddenShare >= 0 && hiddenShare < 1, "hidden share must be in [0, 1)");
+  require(hiddenShare >= 0 && hiddenShare <= 1,
+          "hidden share must be in [0, 1] (1 keeps every landmark)");
   require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
   require(threads >= 0 && threads <= 64, "threads must be 0..64");
   const PerturbationSettings& p = perturbation;
