@@ -99,7 +99,10 @@ void SearchProblem::sampleRaw(const Eigen::Vector2d& centre,
 
 void SearchProblem::sampleMasked(int k, const Eigen::Vector2d& centre,
                                  Eigen::Ref<Eigen::VectorXf> out) const {
+  // Normalise before masking, as the templates are: they mask the reconstruction of normalised
+  // patches. Masking raw intensities would add the mask's own shape times the patch mean.
   samplePatch(*image_, centre, patchSize_, out);
+  normalisePatch(out);
   out.array() *= masks_.col(k).array();
   normalisePatch(out);
 }
