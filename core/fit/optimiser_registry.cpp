@@ -13,6 +13,8 @@ using Factory = std::unique_ptr<Optimiser> (*)(const OptimiserSettings&);
 const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> entries = {
       // OPTIMISER ENTRIES (one line each: {"name", &makeXOptimiser},)
+      {"gauss-newton", &makeGaussNewtonOptimiser},
+      {"fastncc", &makeFastNccOptimiser},
       {"powell", &makePowellOptimiser},
       {"nelder-mead", &makeNelderMeadOptimiser},
   };
