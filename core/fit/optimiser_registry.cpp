@@ -17,6 +17,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"fastncc", &makeFastNccOptimiser},
       {"powell", &makePowellOptimiser},
       {"nelder-mead", &makeNelderMeadOptimiser},
+      {"condensation", &makeCondensationOptimiser},
   };
   return entries;
 }
