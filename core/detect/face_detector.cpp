@@ -1,0 +1,265 @@
+#include "core/detect/face_detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/objdetect.hpp>
+#include <string>
+
+#include "core/common/error.hpp"
+
+#ifdef CLM3D_HAVE_DLIB
+#include <dlib/image_processing/frontal_face_detector.h>
+#include <dlib/image_transforms/interpolation.h>
+#endif
+
+namespace clm3d {
+
+namespace {
+
+// dlib's frontal detector scans an 80 x 80 pixel window; smaller faces need the image enlarged.
+constexpr int kDlibWindow = 80;
+
+cv::Mat toGrey(const cv::Mat& image) {
+  if (image.empty()) throw InputError("face detector: the image is empty");
+  if (image.depth() != CV_8U) {
+    throw InputError("face detector: the image must have 8-bit channels (grey, BGR or BGRA)");
+  }
+  cv::Mat grey;
+  switch (image.channels()) {
+    case 1:
+      grey = image;
+      break;
+    case 3:
+      cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+      break;
+    case 4:
+      cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+      break;
+    default:
+      throw InputError("face detector: the image has " + std::to_string(image.channels()) +
+                       " channels; expected 1 (grey), 3 (BGR) or 4 (BGRA)");
+  }
+  return grey;
+}
+
+double area(const cv::Rect2d& r) {
+  return std::max(0.0, r.width) * std::max(0.0, r.height);
+}
+
+std::filesystem::path cascadePath(const std::filesystem::path& dir, const std::string& file) {
+  const std::filesystem::path path(file);
+  return path.is_absolute() ? path : dir / path;
+}
+
+void loadCascade(cv::CascadeClassifier& cascade, const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throwInputError(path,
+                    "face detector cascade not found; install opencv-data (Debian/Ubuntu: apt "
+                    "install opencv-data) or give the folder that holds the cascades");
+  }
+  bool loaded = false;
+  try {
+    loaded = cascade.load(path.string());
+  } catch (const cv::Exception&) {
+    loaded = false;
+  }
+  if (!loaded || cascade.empty()) {
+    throwInputError(path, "not a readable OpenCV cascade file; reinstall opencv-data");
+  }
+}
+
+bool overlaps(const cv::Rect2d& a, const cv::Rect2d& b, double maxIou) {
+  const double inter = area(a & b);
+  const double smaller = std::min(area(a), area(b));
+  return boxIou(a, b) > maxIou || (smaller > 0.0 && inter > 0.7 * smaller);
+}
+
+bool overlapsAny(const FaceBox& box, const std::vector<FaceBox>& others, double maxIou) {
+  for (const FaceBox& other : others) {
+    if (overlaps(box.box, other.box, maxIou)) return true;
+  }
+  return false;
+}
+
+// Greedy suppression ranked by score, frontal boxes' scores multiplied by `frontalWeight`: the
+// profile cascade also fires on faces turned only 15-30 degrees, where a frontal start is the
+// better one, so a profile box must clearly out-score an overlapping frontal box to replace it.
+std::vector<FaceBox> rankAndSuppress(std::vector<FaceBox> boxes, double maxIou,
+                                     double frontalWeight) {
+  const auto rank = [frontalWeight](const FaceBox& b) {
+    return b.profile ? b.score : b.score * frontalWeight;
+  };
+  std::stable_sort(boxes.begin(), boxes.end(), [&rank](const FaceBox& a, const FaceBox& b) {
+    if (rank(a) != rank(b)) return rank(a) > rank(b);
+    return area(a.box) > area(b.box);
+  });
+  std::vector<FaceBox> kept;
+  for (const FaceBox& candidate : boxes) {
+    if (!overlapsAny(candidate, kept, maxIou)) kept.push_back(candidate);
+  }
+  return kept;
+}
+
+}  // namespace
+
+const char* detectorKindName(DetectorKind kind) {
+  return kind == DetectorKind::DlibHog ? "dlib" : "cascade";
+}
+
+DetectorKind parseDetectorKind(const std::string& name) {
+  if (name == "cascade") return DetectorKind::Cascade;
+  if (name == "dlib") return DetectorKind::DlibHog;
+  throw InputError("unknown face detector '" + name + "'; valid: cascade, dlib");
+}
+
+void FaceDetectorSettings::validate() const {
+  if (minFaceSize < 8) throw InputError("face detector: minFaceSize must be at least 8 pixels");
+  if (!(scaleFactor > 1.0 && scaleFactor <= 2.0)) {
+    throw InputError("face detector: scaleFactor must be in (1, 2]");
+  }
+  if (minNeighbours < 1) throw InputError("face detector: minNeighbours must be at least 1");
+  if (!(overlapIou > 0.0 && overlapIou <= 1.0)) {
+    throw InputError("face detector: overlapIou must be in (0, 1]");
+  }
+  if (!(frontalPreference >= 1.0 && std::isfinite(frontalPreference))) {
+    throw InputError("face detector: frontalPreference must be at least 1");
+  }
+  if (!std::isfinite(dlibThreshold))
+    throw InputError("face detector: dlibThreshold must be finite");
+  if (frontalCascade.empty()) throw InputError("face detector: frontalCascade is empty");
+  if (profiles && profileCascade.empty()) {
+    throw InputError("face detector: profileCascade is empty");
+  }
+}
+
+double boxIou(const cv::Rect2d& a, const cv::Rect2d& b) {
+  const double inter = area(a & b);
+  const double uni = area(a) + area(b) - inter;
+  return uni > 0.0 ? inter / uni : 0.0;
+}
+
+std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou) {
+  return rankAndSuppress(std::move(boxes), maxIou, 1.0);
+}
+
+struct FaceDetector::Impl {
+  cv::CascadeClassifier frontal;
+  cv::CascadeClassifier profile;
+#ifdef CLM3D_HAVE_DLIB
+  dlib::frontal_face_detector hog = dlib::get_frontal_face_detector();
+#endif
+
+  void runCascade(cv::CascadeClassifier& cascade, const cv::Mat& grey,
+                  const FaceDetectorSettings& settings, bool isProfile, bool mirror,
+                  std::vector<FaceBox>& out) const {
+    std::vector<cv::Rect> found;
+    std::vector<int> neighbours;
+    const cv::Size minSize(settings.minFaceSize, settings.minFaceSize);
+    cascade.detectMultiScale(grey, found, neighbours, settings.scaleFactor, settings.minNeighbours,
+                             0, minSize);
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      FaceBox face;
+      cv::Rect2d box(found[i]);
+      if (mirror) box.x = grey.cols - box.x - box.width;
+      face.box = box;
+      face.score = i < neighbours.size() ? neighbours[i] : settings.minNeighbours;
+      face.profile = isProfile;
+      face.mirrored = mirror;
+      face.detector = DetectorKind::Cascade;
+      out.push_back(face);
+    }
+  }
+
+#ifdef CLM3D_HAVE_DLIB
+  void runDlib(const cv::Mat& grey, const FaceDetectorSettings& settings,
+               std::vector<FaceBox>& out) {
+    dlib::array2d<unsigned char> image(grey.rows, grey.cols);
+    for (int r = 0; r < grey.rows; ++r) {
+      const unsigned char* row = grey.ptr<unsigned char>(r);
+      for (int c = 0; c < grey.cols; ++c) image[r][c] = row[c];
+    }
+    // Enlarge until dlib's 80-pixel window matches the smallest face asked for.
+    int doublings = 0;
+    while ((kDlibWindow >> doublings) > settings.minFaceSize * 1.25 && doublings < 2) ++doublings;
+    for (int d = 0; d < doublings; ++d) dlib::pyramid_up(image);
+    const double shrink = 1.0 / static_cast<double>(1 << doublings);
+    std::vector<dlib::rect_detection> detections;
+    hog(image, detections, settings.dlibThreshold);
+    for (const dlib::rect_detection& detection : detections) {
+      FaceBox face;
+      const dlib::rectangle& r = detection.rect;
+      // dlib rectangles are inclusive pixel ranges; pyramid_up maps pixel centres x -> 2x.
+      face.box = cv::Rect2d(
+          static_cast<double>(r.left()) * shrink, static_cast<double>(r.top()) * shrink,
+          static_cast<double>(r.width()) * shrink, static_cast<double>(r.height()) * shrink);
+      if (face.box.width < settings.minFaceSize) continue;
+      face.score = detection.detection_confidence;
+      face.detector = DetectorKind::DlibHog;
+      face.profile = detection.weight_index == 1 || detection.weight_index == 2;
+      face.mirrored = detection.weight_index == 2;
+      out.push_back(face);
+    }
+  }
+#endif
+};
+
+FaceDetector::FaceDetector(DetectorKind kind, const FaceDetectorSettings& settings,
+                           const std::filesystem::path& cascadeDir)
+    : kind_(kind), settings_(settings) {
+  settings_.validate();
+  if (!available(kind)) {
+    throw Error(
+        "the dlib face detector is not available: clm3d was built without dlib (install "
+        "libdlib-dev and rebuild, or use the cascade detector)");
+  }
+  impl_ = std::make_unique<Impl>();
+  if (kind == DetectorKind::Cascade) {
+    loadCascade(impl_->frontal, cascadePath(cascadeDir, settings_.frontalCascade));
+    if (settings_.profiles) {
+      loadCascade(impl_->profile, cascadePath(cascadeDir, settings_.profileCascade));
+    }
+  }
+}
+
+FaceDetector::~FaceDetector() = default;
+FaceDetector::FaceDetector(FaceDetector&&) noexcept = default;
+FaceDetector& FaceDetector::operator=(FaceDetector&&) noexcept = default;
+
+bool FaceDetector::available(DetectorKind kind) {
+#ifdef CLM3D_HAVE_DLIB
+  (void)kind;
+  return true;
+#else
+  return kind != DetectorKind::DlibHog;
+#endif
+}
+
+std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
+  cv::Mat grey = toGrey(bgrOrGrey);
+  if (settings_.equalise) {
+    cv::Mat equalised;
+    cv::equalizeHist(grey, equalised);
+    grey = equalised;
+  }
+  std::vector<FaceBox> boxes;
+  if (grey.cols < settings_.minFaceSize || grey.rows < settings_.minFaceSize) return boxes;
+  if (kind_ == DetectorKind::Cascade) {
+    impl_->runCascade(impl_->frontal, grey, settings_, false, false, boxes);
+    if (settings_.profiles) {
+      impl_->runCascade(impl_->profile, grey, settings_, true, false, boxes);
+      cv::Mat flipped;
+      cv::flip(grey, flipped, 1);
+      impl_->runCascade(impl_->profile, flipped, settings_, true, true, boxes);
+    }
+  } else {
+#ifdef CLM3D_HAVE_DLIB
+    impl_->runDlib(grey, settings_, boxes);
+#endif
+  }
+  const double frontalWeight = kind_ == DetectorKind::Cascade ? settings_.frontalPreference : 1.0;
+  return rankAndSuppress(std::move(boxes), settings_.overlapIou, frontalWeight);
+}
+
+}  // namespace clm3d

@@ -1,0 +1,90 @@
+// Face detection for the start of a search when there is no previous frame: OpenCV's Viola-Jones
+// cascades (a frontal cascade plus the profile cascade run on the image and on its mirror, since
+// OpenCV's profile cascade finds faces turned one way only) or dlib's HOG detector when dlib was
+// found at build time. One place that finds the cascade files, merges overlapping boxes and ranks
+// them, so the CLI, the GUI and the tests start from the same boxes (docs/initialisation.md).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
+#include <string>
+#include <vector>
+
+namespace clm3d {
+
+enum class DetectorKind { Cascade, DlibHog };
+
+// "cascade" / "dlib"; parseDetectorKind throws InputError listing the valid names.
+const char* detectorKindName(DetectorKind kind);
+DetectorKind parseDetectorKind(const std::string& name);
+
+struct FaceBox {
+  cv::Rect2d box;         // input pixels (OpenCV convention: x, y of the top-left corner)
+  double score = 0.0;     // cascade: merged raw detections; dlib: detection confidence
+  bool profile = false;   // found by a profile detector: the head is turned far to one side
+  bool mirrored = false;  // the profile detector ran on the flipped image
+  DetectorKind detector = DetectorKind::Cascade;  // which detector found it (calibration differs)
+};
+
+struct FaceDetectorSettings {
+  int minFaceSize = 48;  // pixels: the smallest box side searched (dlib: < 64 doubles the image)
+  double scaleFactor = 1.1;  // cascade: step between pyramid scales (> 1)
+  int minNeighbours = 3;     // cascade: raw detections a box needs (>= 1)
+  bool profiles = true;      // cascade: also run the profile cascade, on the image and its mirror
+  bool equalise = true;      // histogram equalisation of the grey image before detecting
+  double overlapIou = 0.3;   // boxes overlapping more than this merge (the better one is kept)
+  // cascade: frontal boxes rank with their score times this, so an overlapping profile box
+  // replaces a frontal one only with clearly more support (both fire at 20-50 degrees of yaw)
+  double frontalPreference = 2.0;
+  double dlibThreshold = 0.0;  // dlib: added to the detector's threshold (lower finds more)
+  // Cascade files, relative to the cascade directory (or absolute).
+  std::string frontalCascade = "haarcascades/haarcascade_frontalface_alt2.xml";
+  std::string profileCascade = "haarcascades/haarcascade_profileface.xml";
+
+  void validate() const;  // InputError naming the bad setting
+};
+
+class FaceDetector {
+ public:
+  static constexpr const char* kDefaultCascadeDir = "/usr/share/opencv4";
+
+  // Loads the detector. Cascade: throws InputError naming a missing or unreadable cascade file
+  // ("install opencv-data"). DlibHog: throws Error when clm3d was built without dlib.
+  explicit FaceDetector(DetectorKind kind = DetectorKind::Cascade,
+                        const FaceDetectorSettings& settings = {},
+                        const std::filesystem::path& cascadeDir = kDefaultCascadeDir);
+  ~FaceDetector();
+  FaceDetector(FaceDetector&&) noexcept;
+  FaceDetector& operator=(FaceDetector&&) noexcept;
+  FaceDetector(const FaceDetector&) = delete;
+  FaceDetector& operator=(const FaceDetector&) = delete;
+
+  // Whether this build can make a detector of the kind (DlibHog needs dlib at build time).
+  static bool available(DetectorKind kind);
+
+  // Faces in an 8-bit grey, BGR or BGRA image, overlapping boxes merged, best first (highest
+  // score, cascade frontal scores times frontalPreference; then largest). Empty when there is none.
+  // Throws InputError for an empty image or an unsupported type.
+  std::vector<FaceBox> detect(const cv::Mat& bgrOrGrey);
+
+  DetectorKind kind() const { return kind_; }
+  const FaceDetectorSettings& settings() const { return settings_; }
+
+ private:
+  struct Impl;
+  DetectorKind kind_;
+  FaceDetectorSettings settings_;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Intersection over union of two boxes (0 when either is empty).
+double boxIou(const cv::Rect2d& a, const cv::Rect2d& b);
+
+// Greedy non-maximum suppression: sorts by score (then area) and drops every box whose IoU with
+// an already kept box exceeds maxIou, or which lies mostly (> 70% of the smaller box) inside one
+// or around one.
+std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou);
+
+}  // namespace clm3d

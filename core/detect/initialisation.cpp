@@ -1,0 +1,372 @@
+#include "core/detect/initialisation.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/fit/shape_projector.hpp"
+
+namespace clm3d {
+
+namespace {
+
+// Box calibration (docs/initialisation.md, tests/unit/detect/box_calibration_test.cpp).
+// PLACEHOLDER figures from the procedural-head renders; replaced by the final calibration.
+constexpr BoxCalibration kCascadeFrontal{0.38, 0.0, -0.11, 0.0};
+constexpr BoxCalibration kCascadeProfile{0.32, -0.18, -0.06, 45.0};
+constexpr BoxCalibration kDlibFrontal{0.46, 0.0, -0.26, 0.0};
+constexpr BoxCalibration kDlibProfile{0.40, -0.03, -0.17, 25.0};
+
+// The weak prior on log(scale) that settles the depth where perspective does not (SD 0.3).
+constexpr double kLogScaleSd = 0.3;
+
+std::vector<double> startingYaws(bool planar) {
+  if (planar) return {0.0};
+  return {-60.0, -40.0, -20.0, 0.0, 20.0, 40.0, 60.0};
+}
+
+double meanFocal(const Camera& camera) {
+  return 0.5 * (camera.focalX() + camera.focalY());
+}
+
+// Levenberg-Marquardt on the reprojection error of the present points, with the shape prior and,
+// for the 3D model, the depth as an extra unknown u = log(-Tz).
+class PointsProblem {
+ public:
+  PointsProblem(const ShapeModel& shape, const Camera& camera, const std::vector<int>& landmarks,
+                const Eigen::Matrix2Xd& target, double sigma)
+      : shape_(shape),
+        projector_(shape, camera),
+        target_(target),
+        sigma2_(sigma * sigma),
+        withDepth_(!projector_.planar()),
+        params_(projector_.paramCount()),
+        unknowns_(params_ + (withDepth_ ? 1 : 0)),
+        points_(2, static_cast<Eigen::Index>(landmarks.size())),
+        jacobian_(2 * static_cast<Eigen::Index>(landmarks.size()), params_) {
+    projector_.setLandmarks(landmarks);
+    projector_.setInputPixels();
+    radius_ = shape.meanShape.colwise().norm().maxCoeff();
+  }
+
+  int unknowns() const { return unknowns_; }
+  int params() const { return params_; }
+  bool withDepth() const { return withDepth_; }
+  ShapeProjector& projector() { return projector_; }
+
+  // Energy at x (p, then u for the 3D model); +inf when part of the face would be behind the
+  // camera.
+  double energy(const Eigen::VectorXd& x) {
+    if (!setDepth(x)) return std::numeric_limits<double>::infinity();
+    projector_.project(x.head(params_), points_);
+    return (points_ - target_).squaredNorm() + priorEnergy(x);
+  }
+
+  // Gauss-Newton normal equations at x: H = J^T J + prior, g = J^T r + prior gradient.
+  void linearise(const Eigen::VectorXd& x, Eigen::MatrixXd& h, Eigen::VectorXd& g) {
+    setDepth(x);
+    projector_.jacobian(x.head(params_), jacobian_, &points_);
+    const Eigen::Map<const Eigen::VectorXd> residual(points_.data(), points_.size());
+    const Eigen::Map<const Eigen::VectorXd> target(target_.data(), target_.size());
+    Eigen::MatrixXd j(jacobian_.rows(), unknowns_);
+    j.leftCols(params_) = jacobian_;
+    if (withDepth_) {
+      // d(points)/du by central differences (the projector keeps Tz outside p).
+      const double step = 1e-6;
+      Eigen::VectorXd shifted = x;
+      Eigen::Matrix2Xd plus(points_.rows(), points_.cols());
+      Eigen::Matrix2Xd minus(points_.rows(), points_.cols());
+      shifted[params_] = x[params_] + step;
+      setDepth(shifted);
+      projector_.project(x.head(params_), plus);
+      shifted[params_] = x[params_] - step;
+      setDepth(shifted);
+      projector_.project(x.head(params_), minus);
+      setDepth(x);
+      const Eigen::Matrix2Xd d = (plus - minus) / (2.0 * step);
+      j.col(params_) = Eigen::Map<const Eigen::VectorXd>(d.data(), d.size());
+    }
+    const Eigen::VectorXd r = residual - target;
+    h = j.transpose() * j;
+    g = j.transpose() * r;
+    const int modes = shape_.modeCount();
+    for (int k = 0; k < modes; ++k) {
+      const double w = sigma2_ / std::max(shape_.variances[k], 1e-12);
+      h(shapeParam(k), shapeParam(k)) += w;
+      g[shapeParam(k)] += w * x[shapeParam(k)];
+    }
+    if (withDepth_) {
+      // Residual rho = sigma log(S) / sd, d rho / dS = sigma / (sd S).
+      const double scale = x[kParamScale];
+      const double rho = std::sqrt(sigma2_) * std::log(scale) / kLogScaleSd;
+      const double d = std::sqrt(sigma2_) / (kLogScaleSd * scale);
+      h(kParamScale, kParamScale) += d * d;
+      g[kParamScale] += d * rho;
+    }
+  }
+
+  // Minimises from x in place; returns the final energy.
+  double minimise(Eigen::VectorXd& x, int maxIterations) {
+    projector_.clamp(x.head(params_));
+    double e = energy(x);
+    if (!std::isfinite(e)) return e;
+    double mu = 1e-3;
+    Eigen::MatrixXd h;
+    Eigen::VectorXd g;
+    for (int iteration = 0; iteration < maxIterations; ++iteration) {
+      linearise(x, h, g);
+      const double largest = std::max(h.diagonal().maxCoeff(), 1e-12);
+      bool accepted = false;
+      double decrease = 0.0;
+      while (mu < 1e12) {
+        Eigen::MatrixXd damped = h;
+        damped.diagonal().array() += mu * h.diagonal().array() + 1e-12 * largest;
+        const Eigen::VectorXd delta = damped.ldlt().solve(-g);
+        Eigen::VectorXd candidate = x + delta;
+        projector_.clamp(candidate.head(params_));
+        const double ec = energy(candidate);
+        if (std::isfinite(ec) && ec < e) {
+          decrease = e - ec;
+          x = candidate;
+          e = ec;
+          mu = std::max(mu / 3.0, 1e-9);
+          accepted = true;
+          break;
+        }
+        mu *= 5.0;
+      }
+      if (!accepted || decrease <= 1e-14 * (1.0 + e)) break;
+    }
+    setDepth(x);
+    return e;
+  }
+
+ private:
+  bool setDepth(const Eigen::VectorXd& x) {
+    if (!withDepth_) return true;
+    const double depth = std::exp(x[params_]);
+    projector_.setDepth(-depth);
+    return std::isfinite(depth) && depth > 1.5 * radius_ * std::abs(x[kParamScale]);
+  }
+
+  double priorEnergy(const Eigen::VectorXd& x) const {
+    double e = 0.0;
+    for (int k = 0; k < shape_.modeCount(); ++k) {
+      const double b = x[shapeParam(k)];
+      e += sigma2_ * b * b / std::max(shape_.variances[k], 1e-12);
+    }
+    if (withDepth_) {
+      const double logScale = std::log(x[kParamScale]) / kLogScaleSd;
+      e += sigma2_ * logScale * logScale;
+    }
+    return e;
+  }
+
+  const ShapeModel& shape_;
+  ShapeProjector projector_;
+  Eigen::Matrix2Xd target_;
+  double sigma2_;
+  bool withDepth_;
+  int params_;
+  int unknowns_;
+  double radius_ = 1.0;
+  Eigen::Matrix2Xd points_;
+  Eigen::MatrixXd jacobian_;
+};
+
+// 2D similarity target ~ s R(theta) source + t (least squares, Umeyama in complex form).
+struct Similarity2 {
+  double scale = 1.0;
+  double angle = 0.0;
+  Eigen::Vector2d translation = Eigen::Vector2d::Zero();
+};
+
+Similarity2 alignSimilarity2(const Eigen::Matrix2Xd& source, const Eigen::Matrix2Xd& target) {
+  const Eigen::Vector2d ms = source.rowwise().mean();
+  const Eigen::Vector2d mt = target.rowwise().mean();
+  const Eigen::Matrix2Xd s = source.colwise() - ms;
+  const Eigen::Matrix2Xd t = target.colwise() - mt;
+  const double a = (s.row(0).cwiseProduct(t.row(0)) + s.row(1).cwiseProduct(t.row(1))).sum();
+  const double b = (s.row(0).cwiseProduct(t.row(1)) - s.row(1).cwiseProduct(t.row(0))).sum();
+  const double norm = s.squaredNorm();
+  Similarity2 result;
+  if (norm <= 0.0) return result;
+  result.scale = std::hypot(a, b) / norm;
+  result.angle = std::atan2(b, a);
+  const Eigen::Matrix2d r = Eigen::Rotation2Dd(result.angle).toRotationMatrix();
+  result.translation = mt - result.scale * r * ms;
+  return result;
+}
+
+void checkShapeSize(const ClmModel& model, const FitState& state) {
+  if (state.shape.size() != model.shape.modeCount()) {
+    throw InputError("initialisation: the state has " + std::to_string(state.shape.size()) +
+                     " shape coefficients, the model " + std::to_string(model.shape.modeCount()));
+  }
+}
+
+}  // namespace
+
+BoxCalibration boxCalibration(DetectorKind detector, bool profile) {
+  if (detector == DetectorKind::DlibHog) return profile ? kDlibProfile : kDlibFrontal;
+  return profile ? kCascadeProfile : kCascadeFrontal;
+}
+
+FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box) {
+  const cv::Rect2d& r = box.box;
+  if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.width) &&
+        std::isfinite(r.height) && r.width > 0.0 && r.height > 0.0)) {
+    throw InputError("initialisation: the face box is empty or not finite");
+  }
+  const ShapeModel& shape = model.shape;
+  const auto [eyeA, eyeB] = model.scheme().normalisationPair();
+  const Eigen::Vector3d left = shape.meanShape.col(eyeA);
+  const Eigen::Vector3d right = shape.meanShape.col(eyeB);
+  const double iodModel = (left - right).norm();
+  if (!(iodModel > 0.0)) throw InputError("initialisation: the model's eye centres coincide");
+
+  const BoxCalibration calibration = boxCalibration(box.detector, box.profile);
+  const double side = box.mirrored ? 1.0 : -1.0;  // yaw sign of a profile box
+  const bool planar = shape.dims == 2;
+  const double profileYaw = box.profile ? side * radians(calibration.yawDeg) : 0.0;
+
+  FitState state;
+  state.shape = Eigen::VectorXd::Zero(shape.modeCount());
+  state.pose.scale = 1.0;
+  state.pose.pitch = 0.0;
+  state.pose.roll = 0.0;
+  state.pose.yaw = planar ? 0.0 : profileYaw;
+
+  // Frontal eye distance wanted in pixels; the planar model sees the foreshortened one.
+  double iodPixels = calibration.iodPerWidth * r.width;
+  if (planar) iodPixels *= std::cos(profileYaw);
+  const double depth = meanFocal(camera) * iodModel / iodPixels;  // of the eye midpoint
+
+  const Eigen::Vector2d target(
+      r.x + 0.5 * r.width + (box.mirrored ? -1.0 : 1.0) * calibration.eyeOffsetX * r.width,
+      r.y + 0.5 * r.height + calibration.eyeOffsetY * r.width);
+  const Eigen::Vector3d mid = state.pose.rotation() * (0.5 * (left + right));
+  // Eye midpoint at `depth` along -z, on the ray through `target`.
+  const Eigen::Vector3d eye = camera.pixelToEye(target, depth + mid.z());
+  state.pose.translation = eye - mid;
+  return state;
+}
+
+FitState stateFromPoints(const ClmModel& model, const Camera& camera,
+                         const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
+                         const PointsFitSettings& settings) {
+  const ShapeModel& shape = model.shape;
+  const int n = shape.pointCount();
+  if (points.cols() != n) {
+    throw InputError("initial points: " + std::to_string(points.cols()) +
+                     " points given, the model's scheme has " + std::to_string(n));
+  }
+  if (!present.empty() && static_cast<int>(present.size()) != n) {
+    throw InputError("initial points: the present-point mask has " +
+                     std::to_string(present.size()) + " entries, expected " + std::to_string(n));
+  }
+  if (!(settings.pointSigmaPixels > 0.0) || settings.maxIterations < 1) {
+    throw InputError("initial points: pointSigmaPixels must be > 0 and maxIterations >= 1");
+  }
+  std::vector<int> used;
+  for (int i = 0; i < n; ++i) {
+    if (!present.empty() && !present[static_cast<std::size_t>(i)]) continue;
+    if (!points.col(i).allFinite()) {
+      throw InputError("initial points: point " + std::to_string(i + 1) +
+                       " is marked present but is not finite");
+    }
+    used.push_back(i);
+  }
+  if (used.size() < 4) {
+    throw InputError("initial points: " + std::to_string(used.size()) +
+                     " points present, at least 4 are needed to place the model");
+  }
+  const int m = static_cast<int>(used.size());
+  Eigen::Matrix2Xd target(2, m);
+  Eigen::Matrix3Xd mean(3, m);
+  for (int j = 0; j < m; ++j) {
+    target.col(j) = points.col(used[static_cast<std::size_t>(j)]);
+    mean.col(j) = shape.meanShape.col(used[static_cast<std::size_t>(j)]);
+  }
+  const Eigen::Vector2d spread = (target.colwise() - target.rowwise().mean()).rowwise().norm();
+  if (!(spread.norm() > 1e-6)) {
+    throw InputError("initial points: the present points all coincide");
+  }
+
+  PointsProblem problem(shape, camera, used, target, settings.pointSigmaPixels);
+  const bool planar = problem.projector().planar();
+  const double focal = meanFocal(camera);
+
+  Eigen::VectorXd best;
+  double bestEnergy = std::numeric_limits<double>::infinity();
+  for (const double yawDeg : startingYaws(planar)) {
+    // Similarity of the yawed mean shape's (x, -y) to the points: roll, pixel scale, origin.
+    const Eigen::Matrix3d turn = Pose::fromDegrees(0.0, yawDeg, 0.0).rotation();
+    const Eigen::Matrix3Xd turned = turn * mean;
+    Eigen::Matrix2Xd source(2, m);
+    source.row(0) = turned.row(0);
+    source.row(1) = -turned.row(1);
+    const Similarity2 similarity = alignSimilarity2(source, target);
+    if (!(similarity.scale > 0.0)) continue;
+    const double depth = focal / similarity.scale;
+    const Eigen::Vector3d origin = camera.pixelToEye(similarity.translation, depth);
+
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(problem.unknowns());
+    x[kParamTx] = origin.x();
+    x[kParamTy] = origin.y();
+    x[kParamScale] = 1.0;
+    x[kParamYaw] = radians(yawDeg);
+    x[kParamRoll] = -similarity.angle;  // image rotation is clockwise for positive angle (y down)
+    if (problem.withDepth())
+      x[problem.params()] = std::log(depth);
+    else
+      problem.projector().setDepth(-depth);
+    const double e = problem.minimise(x, settings.maxIterations);
+    if (e < bestEnergy) {
+      bestEnergy = e;
+      best = x;
+    }
+  }
+  if (best.size() == 0) throw InputError("initial points: the points do not determine a pose");
+
+  FitState state;
+  state.shape = Eigen::VectorXd::Zero(shape.modeCount());
+  if (problem.withDepth()) {
+    state.pose.translation.z() = -std::exp(best[problem.params()]);
+  } else {
+    // Planar: the depth of the only start (scale 1 there).
+    state.pose.translation.z() = problem.projector().depth();
+  }
+  fromParams(best.head(problem.params()), state);
+  return state;
+}
+
+Eigen::Matrix2Xd projectState(const ClmModel& model, const Camera& camera, const FitState& state) {
+  checkShapeSize(model, state);
+  ShapeProjector projector(model.shape, camera);
+  projector.setInputPixels();
+  projector.setDepth(state.pose.translation.z());
+  Eigen::Matrix2Xd out(2, model.shape.pointCount());
+  projector.project(toParams(state), out);
+  return out;
+}
+
+FitState initialiseFromImage(const ClmModel& model, const Camera& camera, const cv::Mat& image,
+                             FaceDetector& detector) {
+  if (image.cols != camera.width || image.rows != camera.height) {
+    throw InputError("initialisation: the image is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + ", the camera " + std::to_string(camera.width) +
+                     "x" + std::to_string(camera.height));
+  }
+  const std::vector<FaceBox> faces = detector.detect(image);
+  if (faces.empty()) {
+    throw NoFaceFound(std::string("no face found by the ") + detectorKindName(detector.kind()) +
+                      " face detector (smallest face searched: " +
+                      std::to_string(detector.settings().minFaceSize) + " pixels)");
+  }
+  return stateFromBox(model, camera, faces.front());
+}
+
+}  // namespace clm3d

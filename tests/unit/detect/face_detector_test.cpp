@@ -1,0 +1,159 @@
+// Tests of core/detect/face_detector and initialiseFromImage: box overlap and suppression, cascade
+// files that are missing, blank images, a rendered procedural head found (frontal and profile, the
+// profile's side from `mirrored`) with stateFromBox's points near the truth, and dlib's detector
+// when the build has it.
+#include "core/detect/face_detector.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/detect/initialisation.hpp"
+#include "tests/support/fit_fixture.hpp"
+#include "tests/support/test_support.hpp"
+#include "tests/unit/detect/detect_scenes.hpp"
+
+namespace clm3d {
+namespace {
+
+TEST(FaceBoxes, IouAndSuppression) {
+  EXPECT_DOUBLE_EQ(boxIou({0, 0, 10, 10}, {0, 0, 10, 10}), 1.0);
+  EXPECT_DOUBLE_EQ(boxIou({0, 0, 10, 10}, {5, 0, 10, 10}), 50.0 / 150.0);
+  EXPECT_DOUBLE_EQ(boxIou({0, 0, 10, 10}, {20, 20, 5, 5}), 0.0);
+  EXPECT_DOUBLE_EQ(boxIou({0, 0, 0, 0}, {0, 0, 0, 0}), 0.0);
+
+  std::vector<FaceBox> boxes(4);
+  boxes[0].box = {0, 0, 100, 100};
+  boxes[0].score = 3;
+  boxes[1].box = {10, 5, 100, 100};  // overlaps 0 (IoU 0.75) with a better score
+  boxes[1].score = 9;
+  boxes[2].box = {300, 0, 50, 50};  // apart from the others
+  boxes[2].score = 9;
+  boxes[3].box = {40, 40, 30, 30};  // inside 0 and 1 (small IoU) with the best score
+  boxes[3].score = 20;
+  const std::vector<FaceBox> kept = suppressOverlaps(boxes, 0.3);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].box, boxes[3].box);  // best score first; the boxes around it go
+  EXPECT_EQ(kept[1].box, boxes[2].box);
+  // At equal scores the larger box ranks first.
+  std::vector<FaceBox> tie = {boxes[2], boxes[1]};
+  EXPECT_EQ(suppressOverlaps(tie, 0.3).front().box, boxes[1].box);
+}
+
+TEST(FaceDetector, MissingCascadeNamesTheFileAndThePackage) {
+  const test::TempDir empty;
+  try {
+    FaceDetector detector(DetectorKind::Cascade, {}, empty.path());
+    FAIL() << "no cascade files, but no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("haarcascade_frontalface_alt2.xml"), std::string::npos) << message;
+    EXPECT_NE(message.find("install opencv-data"), std::string::npos) << message;
+  }
+  test::writeFile(empty / "broken.xml", "<opencv_storage>nothing</opencv_storage>\n");
+  FaceDetectorSettings settings;
+  settings.frontalCascade = (empty / "broken.xml").string();
+  settings.profiles = false;
+  EXPECT_THROW(FaceDetector(DetectorKind::Cascade, settings), InputError);
+  settings = {};
+  settings.minNeighbours = 0;
+  EXPECT_THROW(FaceDetector(DetectorKind::Cascade, settings), InputError);
+  EXPECT_EQ(parseDetectorKind("dlib"), DetectorKind::DlibHog);
+  EXPECT_THROW(parseDetectorKind("hog"), InputError);
+}
+
+TEST(FaceDetector, BlankImageHasNoFace) {
+  FaceDetector detector;
+  const cv::Mat blank(240, 320, CV_8UC3, cv::Scalar(128, 128, 128));
+  EXPECT_TRUE(detector.detect(blank).empty());
+  const Camera camera = Camera::fromVerticalFov(320, 240, 45.0);
+  try {
+    initialiseFromImage(test::fitTestModel(), camera, blank, detector);
+    FAIL() << "no NoFaceFound";
+  } catch (const NoFaceFound& e) {
+    EXPECT_NE(std::string(e.what()).find("no face found"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(detector.detect(cv::Mat()), InputError);
+  EXPECT_THROW(detector.detect(cv::Mat(240, 320, CV_32FC1, cv::Scalar(0.5))), InputError);
+  // The camera must describe the image.
+  EXPECT_THROW(initialiseFromImage(test::fitTestModel(), Camera::fromVerticalFov(640, 480, 45.0),
+                                   blank, detector),
+               InputError);
+}
+
+// The held-out procedural head (no fixture model saw it) in a 640x480 frame.
+test::Scene heldOutScene(double yawDeg) {
+  const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
+  OffscreenRenderer renderer(head.mesh);
+  return test::renderScene(renderer, head.landmarks, test::sceneCamera(), 0.0, yawDeg, 0.0,
+                           {330.0, 220.0}, 55.0, 7);
+}
+
+// Mean distance of the start's points to the truth over the landmarks a detector box can place
+// (all but the earlobes), in units of the frontal eye distance.
+double startError(const ClmModel& model, const test::Scene& scene, const FitState& start) {
+  const Eigen::Matrix2Xd points = projectState(model, test::sceneCamera(), start);
+  std::vector<bool> use(25, true);
+  use[18] = use[24] = false;
+  return test::meanPointError(points, scene.truth, use) / scene.iodFrontal;
+}
+
+TEST(FaceDetector, CascadeFindsARenderedHeadAndTheStartIsNear) {
+  const ClmModel& model = test::fitTestModel();
+  const test::Scene scene = heldOutScene(0.0);
+  FaceDetector detector;
+  const std::vector<FaceBox> faces = detector.detect(scene.bgr);
+  ASSERT_FALSE(faces.empty());
+  const FaceBox& best = faces.front();
+  EXPECT_TRUE(best.box.contains({scene.eyeMid.x(), scene.eyeMid.y()}));
+  EXPECT_FALSE(best.profile);
+  EXPECT_EQ(best.detector, DetectorKind::Cascade);
+  const FitState start = initialiseFromImage(model, test::sceneCamera(), scene.bgr, detector);
+  EXPECT_LT(startError(model, scene, start), 0.2);
+}
+
+TEST(FaceDetector, ProfileCascadeSaysWhichWayTheHeadTurns) {
+  const ClmModel& model = test::fitTestModel();
+  FaceDetector detector;
+  for (const double yaw : {-50.0, 50.0}) {
+    const test::Scene scene = heldOutScene(yaw);
+    const std::vector<FaceBox> faces = detector.detect(scene.bgr);
+    ASSERT_FALSE(faces.empty()) << "yaw " << yaw;
+    const FaceBox& best = faces.front();
+    EXPECT_TRUE(best.box.contains({scene.eyeMid.x(), scene.eyeMid.y()})) << "yaw " << yaw;
+    EXPECT_TRUE(best.profile) << "yaw " << yaw;
+    // OpenCV's profile cascade finds heads turned towards the image's left (negative yaw); the
+    // other side is found on the mirrored image.
+    EXPECT_EQ(best.mirrored, yaw > 0.0) << "yaw " << yaw;
+    const FitState start = stateFromBox(model, test::sceneCamera(), best);
+    EXPECT_GT(start.pose.yaw * yaw, 0.0) << "yaw " << yaw;
+    EXPECT_LT(startError(model, scene, start), 0.3) << "yaw " << yaw;
+  }
+}
+
+TEST(FaceDetector, DlibFindsARenderedHeadWhenBuiltWithDlib) {
+  if (!FaceDetector::available(DetectorKind::DlibHog)) {
+    try {
+      FaceDetector detector(DetectorKind::DlibHog);
+      FAIL() << "dlib detector made without dlib";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("without dlib"), std::string::npos) << e.what();
+    }
+    GTEST_SKIP() << "clm3d was built without dlib";
+  }
+  const ClmModel& model = test::fitTestModel();
+  const test::Scene scene = heldOutScene(0.0);
+  FaceDetectorSettings settings;
+  settings.minFaceSize = 80;  // dlib's own window: no image doubling, fast
+  FaceDetector detector(DetectorKind::DlibHog, settings);
+  const std::vector<FaceBox> faces = detector.detect(scene.bgr);
+  ASSERT_FALSE(faces.empty());
+  EXPECT_TRUE(faces.front().box.contains({scene.eyeMid.x(), scene.eyeMid.y()}));
+  EXPECT_EQ(faces.front().detector, DetectorKind::DlibHog);
+  const FitState start = stateFromBox(model, test::sceneCamera(), faces.front());
+  EXPECT_LT(startError(model, scene, start), 0.2);
+  EXPECT_TRUE(detector.detect(cv::Mat(240, 320, CV_8UC1, cv::Scalar(90))).empty());
+}
+
+}  // namespace
+}  // namespace clm3d
