@@ -13,6 +13,8 @@ FitSettings FitOptions::settings() const {
   result.maxIterations = iterations;
   result.alphaMask = !noAlpha;
   result.optimiserSettings.seed = seed;
+  result.textureModes = textureModes;
+  result.optimiserSettings.shapePrior = shapePrior;
   return result;
 }
 
@@ -42,6 +44,16 @@ void addFitOptions(CLI::App& command, FitOptions& options) {
   command
       .add_option("--detector", options.detector, "face detector: cascade (OpenCV) or dlib (HOG)")
       ->capture_default_str();
+  command
+      .add_option("--shape-prior", options.shapePrior,
+                  "weight of the shape prior in gauss-newton and fastncc (0 = none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
+  command
+      .add_option("--texture-modes", options.textureModes,
+                  "texture modes used to synthesise the templates (0 = all)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   command.add_option("--seed", options.seed, "random seed (condensation)")->capture_default_str();
 }
 

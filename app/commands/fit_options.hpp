@@ -18,6 +18,8 @@ struct FitOptions {
   double fovDeg = 40.0;
   std::string detector = "cascade";
   std::uint64_t seed = 1;
+  int textureModes = 0;
+  double shapePrior = OptimiserSettings{}.shapePrior;
 
   FitSettings settings() const;
   DetectorKind detectorKind() const;  // InputError for an unknown name

@@ -36,6 +36,7 @@ void FitSettings::validate(const ClmModel& model) const {
   if (maxIterations < 1) throw InputError("fit: the iteration limit must be at least 1");
   if (!(tolerancePixels > 0.0)) throw InputError("fit: the tolerance must be positive");
   if (!(viewHysteresisDeg >= 0.0)) throw InputError("fit: the view hysteresis must be >= 0");
+  if (textureModes < 0) throw InputError("fit: the texture mode limit must be >= 0");
 }
 
 Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& settings)
@@ -49,6 +50,7 @@ Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& s
   settings_.validate(model);
   scales_ = settings_.scales > 0 ? settings_.scales : modelScales(model);
   optimiser_ = makeOptimiser(settings_.optimiser, settings_.optimiserSettings);
+  problem_.setTextureModeLimit(settings_.textureModes);
   eyes_ = model.scheme().normalisationPair();
   inputProjector_.setInputPixels();
   const PatchModel& finest = model.views.front().scales.front();

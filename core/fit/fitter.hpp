@@ -28,6 +28,7 @@ struct FitSettings {
   int maxIterations = 4;         // per scale (the thesis used at most 4)
   double tolerancePixels = 0.1;  // converged when no point moves more (level pixels)
   bool alphaMask = true;         // alpha masking of template and image patches
+  int textureModes = 0;          // texture modes used to synthesise the templates (0 = all)
   double viewHysteresisDeg = 5.0;
 
   void validate(const ClmModel& model) const;  // InputError naming the bad setting

@@ -65,13 +65,17 @@ void SearchProblem::synthesiseTemplates(const Eigen::Ref<const Eigen::VectorXd>&
   }
   const PcaModel& pca = patches_->pca;
   concatenated_ -= pca.mean;
-  coefficients_.noalias() = pca.components.transpose() * concatenated_;
-  for (Eigen::Index i = 0; i < coefficients_.size(); ++i) {
+  const Eigen::Index modes = textureModeLimit_ > 0
+                                 ? std::min<Eigen::Index>(textureModeLimit_, pca.modeCount())
+                                 : pca.modeCount();
+  auto used = coefficients_.head(modes);
+  used.noalias() = pca.components.leftCols(modes).transpose() * concatenated_;
+  for (Eigen::Index i = 0; i < modes; ++i) {
     const float limit = 3.0f * std::sqrt(std::max(pca.variances[i], 0.0f));
-    coefficients_[i] = std::clamp(coefficients_[i], -limit, limit);
+    used[i] = std::clamp(used[i], -limit, limit);
   }
   concatenated_ = pca.mean;
-  concatenated_.noalias() += pca.components * coefficients_;
+  concatenated_.noalias() += pca.components.leftCols(modes) * used;
   for (int k = 0; k < m; ++k) {
     synthetic_.col(k) = concatenated_.segment(Eigen::Index(k) * n, n);
     templates_.col(k) = synthetic_.col(k).cwiseProduct(masks_.col(k));

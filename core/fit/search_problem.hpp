@@ -34,6 +34,9 @@ class SearchProblem {
   // without background masking).
   void configure(const PatchModel& patches, const WorkingImage& image, int level, bool alphaMask,
                  double depth);
+  // Synthesise with at most this many texture modes (0 = all of the model's). Fewer modes keep
+  // the templates closer to a typical face, so a misplaced patch is not reproduced as it is.
+  void setTextureModeLimit(int modes) { textureModeLimit_ = modes; }
   // Samples the image at p, projects into the PCA model (coefficients clamped to +-3 SD),
   // reconstructs and masks: the templates the optimisers match against until the next call.
   void synthesiseTemplates(const Eigen::Ref<const Eigen::VectorXd>& p);
@@ -78,6 +81,7 @@ class SearchProblem {
   int level_ = 0;
   int patchSize_ = 0;
   std::uint64_t templateVersion_ = 0;
+  int textureModeLimit_ = 0;
   Eigen::MatrixXf templates_;  // patchPixels x m, masked and normalised
   Eigen::MatrixXf synthetic_;  // patchPixels x m, unmasked
   Eigen::MatrixXf masks_;      // patchPixels x m
