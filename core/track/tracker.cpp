@@ -65,8 +65,7 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
     if (shape.variances[k] > 0)
       mahalanobis += fit.state.shape[k] * fit.state.shape[k] / shape.variances[k];
   }
-  if (std::sqrt(mahalanobis) >
-      settings_.maxShapeDistance * std::sqrt(std::max(1, shape.modeCount()))) {
+  if (std::sqrt(mahalanobis) > settings_.maxShapeRms * std::sqrt(std::max(1, shape.modeCount()))) {
     return TrackFailure::ImplausibleShape;
   }
   if (fit.confidence < settings_.minConfidence) return TrackFailure::LowConfidence;

@@ -20,9 +20,10 @@ namespace clm3d {
 struct TrackerSettings {
   FitSettings fit;
   DetectorKind detector = DetectorKind::Cascade;
-  double minConfidence = 0.35;    // mean NCC below this marks the frame as failed
-  double maxShapeDistance = 4.0;  // Mahalanobis distance of b_s (in SD) beyond which the shape is
-                                  // implausible
+  double minConfidence = 0.35;  // mean NCC below this marks the frame as failed
+  // Root mean square of b_k / SD_k beyond which the shape is implausible: a real face sits near 1;
+  // with every mode clamped to +-3 SD, 2.5 means most modes are pressed against their limits.
+  double maxShapeRms = 2.5;
   double minInterOcularPixels = 8.0;  // a smaller face is a lost track
 };
 
