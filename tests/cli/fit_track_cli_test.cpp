@@ -1,0 +1,171 @@
+// clm3d fit and clm3d track through the real binary, on the fit fixture's model and renders of a
+// procedural head: a fit from given points and from the detector, a short tracked video with its
+// overlay evaluated against the truth, and the bad inputs the issue names (an unreadable video, a
+// model of another scheme, an image without a face), which must exit 1 naming the problem.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+
+#include "core/eval/synthetic_sequence.hpp"
+#include "core/model/model_file.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/track/track_table.hpp"
+#include "core/video/video_writer.hpp"
+#include "core/viz/image_file.hpp"
+#include "tests/support/fit_fixture.hpp"
+#include "tests/support/test_support.hpp"
+#include "tests/support/tiny_model.hpp"
+
+namespace clm3d {
+namespace {
+
+using test::runClm3d;
+
+struct FitFiles {
+  test::TempDir dir;
+  std::string model, image, init, blank;
+  test::FitScene scene;
+};
+
+void fillFitFiles(FitFiles& f) {
+  {
+    f.model = (f.dir / "model.clm3d").string();
+    saveModel(test::fitTestModel(), f.model);
+    // The camera of `clm3d fit` is the default 40-degree one, as the fixture's.
+    f.scene = test::makeFitScene(test::fitTestModel(), 0.0, 15.0, test::kHeldOutHead, 70.0);
+    f.image = (f.dir / "face.png").string();
+    writeImage(f.image, f.scene.image);
+    LandmarkSet start(25, 2);
+    for (int i = 0; i < 25; ++i) {
+      start.set(i, Eigen::Vector2d(f.scene.truthPoints.col(i) + Eigen::Vector2d(3.0, -2.0)));
+    }
+    f.init = (f.dir / "start.pts").string();
+    writeLandmarks(f.init, start, Scheme::thesis25());
+    f.blank = (f.dir / "blank.png").string();
+    writeImage(f.blank, cv::Mat(240, 320, CV_8UC3, cv::Scalar(90, 90, 90)));
+  }
+}
+
+const FitFiles& fitFiles() {
+  static FitFiles files;
+  static const bool filled = (fillFitFiles(files), true);
+  (void)filled;
+  return files;
+}
+
+double errorOf(const std::string& ptsPath, const test::FitScene& scene) {
+  const LandmarkSet found = readLandmarks(ptsPath, &Scheme::thesis25());
+  Eigen::Matrix2Xd points(2, 25);
+  for (int i = 0; i < 25; ++i) points.col(i) = found.point(i).head<2>();
+  return test::meanPointError(points, scene.truthPoints) / scene.interOcular;
+}
+
+TEST(FitCli, FitsFromGivenPointsAndWritesTheOverlay) {
+  const FitFiles& f = fitFiles();
+  const std::string out = (f.dir / "fit.pts").string();
+  const std::string overlay = (f.dir / "fit.png").string();
+  const auto result = runClm3d("fit --model " + f.model + " --image " + f.image + " --init " +
+                               f.init + " --out " + out + " --overlay " + overlay);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("confidence"), std::string::npos) << result.output;
+  EXPECT_LT(errorOf(out, f.scene), 0.08);
+  EXPECT_FALSE(readImage(overlay).empty());
+}
+
+TEST(FitCli, FitsFromTheFaceDetector) {
+  const FitFiles& f = fitFiles();
+  const std::string out = (f.dir / "detected.ljson").string();
+  const auto result = runClm3d("fit --model " + f.model + " --image " + f.image + " --out " + out);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_LT(errorOf(out, f.scene), 0.12);
+}
+
+TEST(FitCli, EveryOptimiserRunsFromTheCommandLine) {
+  const FitFiles& f = fitFiles();
+  for (const char* optimiser :
+       {"powell", "nelder-mead", "gauss-newton", "fastncc", "condensation"}) {
+    const std::string out = (f.dir / (std::string(optimiser) + ".pts")).string();
+    const auto result = runClm3d("fit --model " + f.model + " --image " + f.image + " --init " +
+                                 f.init + " --optimiser " + optimiser + " --out " + out);
+    ASSERT_EQ(result.exitCode, 0) << optimiser << ": " << result.output;
+    EXPECT_LT(errorOf(out, f.scene), 0.1) << optimiser;
+  }
+}
+
+TEST(FitCli, AnImageWithoutAFaceIsAClearError) {
+  const FitFiles& f = fitFiles();
+  const auto result = runClm3d("fit --model " + f.model + " --image " + f.blank + " --out " +
+                               (f.dir / "none.pts").string());
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.output.find("no face found"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("blank.png"), std::string::npos) << result.output;
+}
+
+TEST(FitCli, AModelOfAnotherSchemeIsAClearError) {
+  const FitFiles& f = fitFiles();
+  const std::string tiny = (f.dir / "tiny.clm3d").string();
+  saveModel(test::makeTinyModel(), tiny);
+  const auto result = runClm3d("fit --model " + tiny + " --image " + f.image + " --init " + f.init +
+                               " --out " + (f.dir / "tiny.pts").string());
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.output.find("start.pts"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("tiny5"), std::string::npos) << result.output;
+}
+
+TEST(FitCli, UnknownOptimiserListsTheValidOnes) {
+  const FitFiles& f = fitFiles();
+  const auto result = runClm3d("fit --model " + f.model + " --image " + f.image +
+                               " --optimiser simulated-annealing --out x.pts");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.output.find("fastncc"), std::string::npos) << result.output;
+}
+
+TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
+  const FitFiles& f = fitFiles();
+  const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
+  SequenceSettings settings;
+  settings.yawFromDeg = 0.0;
+  settings.yawToDeg = 10.0;
+  settings.stepDeg = 2.0;
+  settings.width = 320;
+  settings.height = 240;
+  settings.interOcularPixels = 60.0;
+  settings.supersample = 1;
+  const SequenceFiles files = SequenceFiles::inFolder(f.dir / "sequence");
+  writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings, {}, files);
+  const std::string tracks = (f.dir / "tracks.csv").string();
+  const std::string overlay = (f.dir / "overlay.avi").string();
+  const auto result = runClm3d("track --quiet --model " + f.model + " --video " +
+                               files.video.string() + " --out " + tracks + " --overlay " + overlay);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("fit time per frame: median"), std::string::npos) << result.output;
+  const TrackTable table = readTrackTable(tracks);
+  ASSERT_EQ(table.rows.size(), 6u);
+  for (const TrackRow& row : table.rows) EXPECT_TRUE(row.success) << "frame " << row.frame;
+  EXPECT_TRUE(std::filesystem::exists(overlay));
+  const auto eval = runClm3d("eval --truth " + files.truth.string() + " --pred " + tracks);
+  ASSERT_EQ(eval.exitCode, 0) << eval.output;
+}
+
+TEST(TrackCli, AnUnreadableVideoIsAClearError) {
+  const FitFiles& f = fitFiles();
+  const std::string fake = (f.dir / "not-a-video.mp4").string();
+  test::writeFile(fake, "this is text, not a video\n");
+  const auto result = runClm3d("track --model " + f.model + " --video " + fake + " --out " +
+                               (f.dir / "t.csv").string());
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.output.find("not-a-video.mp4"), std::string::npos) << result.output;
+}
+
+TEST(TrackCli, ABrokenModelFileIsAClearError) {
+  const FitFiles& f = fitFiles();
+  const std::string broken = (f.dir / "broken.clm3d").string();
+  const std::string bytes = test::readFile(f.model);
+  test::writeFile(broken, bytes.substr(0, bytes.size() / 3));
+  const auto result = runClm3d("track --model " + broken + " --video x.avi --out t.csv");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.output.find("broken.clm3d"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace clm3d
