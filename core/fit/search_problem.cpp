@@ -22,7 +22,8 @@ void SearchProblem::configure(const PatchModel& patches, const WorkingImage& ima
   if (level < 0 || level >= static_cast<int>(image.levels.size())) {
     throw Error("fit: pyramid level out of range");
   }
-  const bool sameModel = patches_ == &patches;
+  const bool sameModel = patches_ == &patches && alphaMask_ == alphaMask;
+  alphaMask_ = alphaMask;
   patches_ = &patches;
   image_ = &image.levels[static_cast<std::size_t>(level)];
   level_ = level;
@@ -42,12 +43,12 @@ void SearchProblem::configure(const PatchModel& patches, const WorkingImage& ima
     concatenated_.resize(Eigen::Index(n) * m);
     coefficients_.resize(patches.pca.modeCount());
     ncc_.resize(m);
-  }
-  for (int k = 0; k < m; ++k) {
-    if (alphaMask && static_cast<std::size_t>(k) < patches.alpha.size()) {
-      masks_.col(k) = patches.alpha[static_cast<std::size_t>(k)];
-    } else {
-      masks_.col(k).setOnes();
+    for (int k = 0; k < m; ++k) {
+      if (alphaMask && static_cast<std::size_t>(k) < patches.alpha.size()) {
+        masks_.col(k) = patches.alpha[static_cast<std::size_t>(k)];
+      } else {
+        masks_.col(k).setOnes();
+      }
     }
   }
 }

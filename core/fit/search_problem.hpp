@@ -9,8 +9,10 @@
 // - Patches are patchSize x patchSize, row-major, sampled bilinearly at the projected landmark
 //   (core/image samplePatch), so a landmark at pixel x has sample (r, c) at
 //   x + (c - (n-1)/2, r - (n-1)/2).
-// - A masked, normalised patch is normalisePatch(alpha .* patch): zero mean, unit (population)
-//   variance; the NCC of two such patches is their dot product divided by patchSize^2, in [-1, 1].
+// - A masked, normalised patch is normalisePatch(alpha .* normalisePatch(patch)), the chain the
+//   templates are built with (they mask a reconstruction of normalised patches): zero mean, unit
+//   (population) variance; the NCC of two such patches is their dot product divided by patchSize^2,
+//   in [-1, 1].
 // - The objective is the mean NCC over the active landmarks (those of the view's model).
 #pragma once
 
@@ -58,7 +60,8 @@ class SearchProblem {
   // Alpha mask of active landmark k (ones when masking is off).
   Eigen::Ref<const Eigen::VectorXf> mask(int k) const;
   // The masked, normalised image patch of landmark k centred at `centre` (level pixels) into
-  // out (patchPixels() values). Unmasked: the raw bilinear samples, not normalised.
+  // out (patchPixels() values): normalised, masked, normalised again. sampleRaw: the raw
+  // bilinear samples, neither masked nor normalised.
   void sampleMasked(int k, const Eigen::Vector2d& centre, Eigen::Ref<Eigen::VectorXf> out) const;
   void sampleRaw(const Eigen::Vector2d& centre, Eigen::Ref<Eigen::VectorXf> out) const;
 
@@ -81,6 +84,7 @@ class SearchProblem {
   int level_ = 0;
   int patchSize_ = 0;
   std::uint64_t templateVersion_ = 0;
+  bool alphaMask_ = true;
   int textureModeLimit_ = 0;
   Eigen::MatrixXf templates_;  // patchPixels x m, masked and normalised
   Eigen::MatrixXf synthetic_;  // patchPixels x m, unmasked
