@@ -12,12 +12,26 @@ namespace clm3d {
 
 namespace {
 
-// Box calibration (docs/initialisation.md, tests/unit/detect/box_calibration_test.cpp).
-// PLACEHOLDER figures from the procedural-head renders; replaced by the final calibration.
-constexpr BoxCalibration kCascadeFrontal{0.38, 0.0, -0.11, 0.0};
-constexpr BoxCalibration kCascadeProfile{0.32, -0.18, -0.06, 45.0};
-constexpr BoxCalibration kDlibFrontal{0.46, 0.0, -0.26, 0.0};
-constexpr BoxCalibration kDlibProfile{0.40, -0.03, -0.17, 25.0};
+// Box calibration: how each detector's boxes sit on faces. Measured by
+// tests/unit/detect/box_calibration_test.cpp (docs/initialisation.md has the tables) as the medians
+// of (frontal eye distance / box width) and of the eye midpoint's offset from the box centre in
+// box widths, on three sources:
+//   P  procedural heads 11-14 rendered 640x480 (45-degree camera) at yaw -75..75 step 15, pitch
+//      -15/0/15, eye distances 40/60/90 px over smooth random backgrounds (396 scenes);
+//   J  the james scan rendered the same way (99 scenes);
+//   R  43 faces of dlib's example photos (68 points, converted), yaw from stateFromPoints.
+// Frontal boxes count on faces within 15 degrees of frontal. Each constant is the mean of the
+// sources' medians (P, J, R for frontal boxes; P, J for profile boxes, whose R faces are mostly
+// within 30 degrees). Median figures (ratio, offset x, offset y, |yaw| of the faces found):
+//   cascade frontal  P 0.395 -0.010 -0.106   J 0.369 -0.015 -0.123   R 0.379 -0.012 -0.119
+//   cascade profile  P 0.320 -0.174 -0.068 45  J 0.297 -0.161 -0.064 45  (R 0.274 -0.147 -0.072)
+//   dlib frontal     P 0.469 +0.002 -0.273   J 0.436 -0.030 -0.228   R 0.436 -0.055 -0.233
+//   dlib side        P 0.395 -0.024 -0.175 30  J 0.436 -0.031 -0.168 45  R 0.397 -0.020 -0.168 30
+// Procedural heads give ~7% larger ratios than real faces (their boxes are tighter).
+constexpr BoxCalibration kCascadeFrontal{0.381, -0.012, -0.116, 0.0};
+constexpr BoxCalibration kCascadeProfile{0.309, -0.168, -0.066, 45.0};
+constexpr BoxCalibration kDlibFrontal{0.447, -0.028, -0.245, 0.0};
+constexpr BoxCalibration kDlibProfile{0.409, -0.025, -0.170, 35.0};
 
 // The weak prior on log(scale) that settles the depth where perspective does not (SD 0.3).
 constexpr double kLogScaleSd = 0.3;
