@@ -7,18 +7,14 @@
 #include <string>
 
 #include "core/common/error.hpp"
-
-#ifdef CLM3D_HAVE_DLIB
-#include <dlib/image_processing/frontal_face_detector.h>
-#include <dlib/image_transforms/interpolation.h>
-#endif
+#include "core/detect/dlib_hog.hpp"
 
 namespace clm3d {
 
 namespace {
 
-// dlib's frontal detector scans an 80 x 80 pixel window; smaller faces need the image enlarged.
-constexpr int kDlibWindow = 80;
+// The smallest face searched in a reduced image (the cascades' windows are 20-24 pixels).
+constexpr int kSmallestWindow = 24;
 
 cv::Mat toGrey(const cv::Mat& image) {
   if (image.empty()) throw InputError("face detector: the image is empty");
@@ -126,6 +122,9 @@ void FaceDetectorSettings::validate() const {
   if (!(frontalPreference >= 1.0 && std::isfinite(frontalPreference))) {
     throw InputError("face detector: frontalPreference must be at least 1");
   }
+  if (maxImageSide != 0 && maxImageSide < 64) {
+    throw InputError("face detector: maxImageSide must be 0 (off) or at least 64 pixels");
+  }
   if (!std::isfinite(dlibThreshold))
     throw InputError("face detector: dlibThreshold must be finite");
   if (frontalCascade.empty()) throw InputError("face detector: frontalCascade is empty");
@@ -147,9 +146,7 @@ std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou)
 struct FaceDetector::Impl {
   cv::CascadeClassifier frontal;
   cv::CascadeClassifier profile;
-#ifdef CLM3D_HAVE_DLIB
-  dlib::frontal_face_detector hog = dlib::get_frontal_face_detector();
-#endif
+  std::unique_ptr<detail::DlibHogDetector> hog;  // loaded only for DlibHog
 
   void runCascade(cv::CascadeClassifier& cascade, const cv::Mat& grey,
                   const FaceDetectorSettings& settings, bool isProfile, bool mirror,
@@ -171,50 +168,14 @@ struct FaceDetector::Impl {
       out.push_back(face);
     }
   }
-
-#ifdef CLM3D_HAVE_DLIB
-  void runDlib(const cv::Mat& grey, const FaceDetectorSettings& settings,
-               std::vector<FaceBox>& out) {
-    dlib::array2d<unsigned char> image(grey.rows, grey.cols);
-    for (int r = 0; r < grey.rows; ++r) {
-      const unsigned char* row = grey.ptr<unsigned char>(r);
-      for (int c = 0; c < grey.cols; ++c) image[r][c] = row[c];
-    }
-    // Enlarge until dlib's 80-pixel window matches the smallest face asked for.
-    int doublings = 0;
-    while ((kDlibWindow >> doublings) > settings.minFaceSize * 1.25 && doublings < 2) ++doublings;
-    for (int d = 0; d < doublings; ++d) dlib::pyramid_up(image);
-    const double shrink = 1.0 / static_cast<double>(1 << doublings);
-    std::vector<dlib::rect_detection> detections;
-    hog(image, detections, settings.dlibThreshold);
-    for (const dlib::rect_detection& detection : detections) {
-      FaceBox face;
-      const dlib::rectangle& r = detection.rect;
-      // dlib rectangles are inclusive pixel ranges; pyramid_up maps pixel centres x -> 2x.
-      face.box = cv::Rect2d(
-          static_cast<double>(r.left()) * shrink, static_cast<double>(r.top()) * shrink,
-          static_cast<double>(r.width()) * shrink, static_cast<double>(r.height()) * shrink);
-      if (face.box.width < settings.minFaceSize) continue;
-      face.score = detection.detection_confidence;
-      face.detector = DetectorKind::DlibHog;
-      face.profile = detection.weight_index == 1 || detection.weight_index == 2;
-      face.mirrored = detection.weight_index == 2;
-      out.push_back(face);
-    }
-  }
-#endif
 };
 
 FaceDetector::FaceDetector(DetectorKind kind, const FaceDetectorSettings& settings,
                            const std::filesystem::path& cascadeDir)
     : kind_(kind), settings_(settings) {
   settings_.validate();
-  if (!available(kind)) {
-    throw Error(
-        "the dlib face detector is not available: clm3d was built without dlib (install "
-        "libdlib-dev and rebuild, or use the cascade detector)");
-  }
   impl_ = std::make_unique<Impl>();
+  if (kind == DetectorKind::DlibHog) impl_->hog = std::make_unique<detail::DlibHogDetector>();
   if (kind == DetectorKind::Cascade) {
     loadCascade(impl_->frontal, cascadePath(cascadeDir, settings_.frontalCascade));
     if (settings_.profiles) {
@@ -228,38 +189,50 @@ FaceDetector::FaceDetector(FaceDetector&&) noexcept = default;
 FaceDetector& FaceDetector::operator=(FaceDetector&&) noexcept = default;
 
 bool FaceDetector::available(DetectorKind kind) {
-#ifdef CLM3D_HAVE_DLIB
-  (void)kind;
-  return true;
-#else
-  return kind != DetectorKind::DlibHog;
-#endif
+  return kind != DetectorKind::DlibHog || detail::dlibAvailable();
 }
 
 std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
   cv::Mat grey = toGrey(bgrOrGrey);
-  if (settings_.equalise) {
+  // Large images are searched at a reduced size; boxes come back in input pixels.
+  FaceDetectorSettings settings = settings_;
+  double scale = 1.0;
+  const int side = std::max(grey.cols, grey.rows);
+  if (settings.maxImageSide > 0 && side > settings.maxImageSide) {
+    scale = static_cast<double>(settings.maxImageSide) / side;
+    cv::Mat reduced;
+    cv::resize(grey, reduced, cv::Size(), scale, scale, cv::INTER_AREA);
+    grey = reduced;
+    settings.minFaceSize =
+        std::max(kSmallestWindow, static_cast<int>(std::lround(settings.minFaceSize * scale)));
+  }
+  if (settings.equalise) {
     cv::Mat equalised;
     cv::equalizeHist(grey, equalised);
     grey = equalised;
   }
   std::vector<FaceBox> boxes;
-  if (grey.cols < settings_.minFaceSize || grey.rows < settings_.minFaceSize) return boxes;
+  if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return boxes;
   if (kind_ == DetectorKind::Cascade) {
-    impl_->runCascade(impl_->frontal, grey, settings_, false, false, boxes);
-    if (settings_.profiles) {
-      impl_->runCascade(impl_->profile, grey, settings_, true, false, boxes);
+    impl_->runCascade(impl_->frontal, grey, settings, false, false, boxes);
+    if (settings.profiles) {
+      impl_->runCascade(impl_->profile, grey, settings, true, false, boxes);
       cv::Mat flipped;
       cv::flip(grey, flipped, 1);
-      impl_->runCascade(impl_->profile, flipped, settings_, true, true, boxes);
+      impl_->runCascade(impl_->profile, flipped, settings, true, true, boxes);
     }
   } else {
-#ifdef CLM3D_HAVE_DLIB
-    impl_->runDlib(grey, settings_, boxes);
-#endif
+    impl_->hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, boxes);
   }
-  const double frontalWeight = kind_ == DetectorKind::Cascade ? settings_.frontalPreference : 1.0;
-  return rankAndSuppress(std::move(boxes), settings_.overlapIou, frontalWeight);
+  if (scale != 1.0) {
+    // Box edges scale exactly with the image (cv::resize keeps the pixel edges aligned).
+    for (FaceBox& box : boxes) {
+      box.box = cv::Rect2d(box.box.x / scale, box.box.y / scale, box.box.width / scale,
+                           box.box.height / scale);
+    }
+  }
+  const double frontalWeight = kind_ == DetectorKind::Cascade ? settings.frontalPreference : 1.0;
+  return rankAndSuppress(std::move(boxes), settings.overlapIou, frontalWeight);
 }
 
 }  // namespace clm3d

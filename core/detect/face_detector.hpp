@@ -34,7 +34,10 @@ struct FaceDetectorSettings {
   int minNeighbours = 3;     // cascade: raw detections a box needs (>= 1)
   bool profiles = true;      // cascade: also run the profile cascade, on the image and its mirror
   bool equalise = true;      // histogram equalisation of the grey image before detecting
-  double overlapIou = 0.3;   // boxes overlapping more than this merge (the better one is kept)
+  // > 0: images whose larger side exceeds this are searched reduced to it (faster on large
+  // photos and HD video; faces below max(24, minFaceSize x reduction) reduced pixels are missed)
+  int maxImageSide = 0;
+  double overlapIou = 0.3;  // boxes overlapping more than this merge (the better one is kept)
   // cascade: frontal boxes rank with their score times this, so an overlapping profile box
   // replaces a frontal one only with clearly more support (both fire at 20-50 degrees of yaw)
   double frontalPreference = 2.0;

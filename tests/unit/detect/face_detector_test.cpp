@@ -110,6 +110,17 @@ TEST(FaceDetector, CascadeFindsARenderedHeadAndTheStartIsNear) {
   EXPECT_EQ(best.detector, DetectorKind::Cascade);
   const FitState start = initialiseFromImage(model, test::sceneCamera(), scene.bgr, detector);
   EXPECT_LT(startError(model, scene, start), 0.2);
+
+  // Searched at half size, the box comes back in input pixels, about where it was.
+  FaceDetectorSettings settings;
+  settings.maxImageSide = 320;
+  settings.profiles = false;
+  FaceDetector reduced(DetectorKind::Cascade, settings);
+  const std::vector<FaceBox> halved = reduced.detect(scene.bgr);
+  ASSERT_FALSE(halved.empty());
+  EXPECT_GT(boxIou(halved.front().box, best.box), 0.7) << halved.front().box << " vs " << best.box;
+  settings.maxImageSide = 10;
+  EXPECT_THROW(FaceDetector(DetectorKind::Cascade, settings), InputError);
 }
 
 TEST(FaceDetector, ProfileCascadeSaysWhichWayTheHeadTurns) {

@@ -5,6 +5,7 @@
 // (green) drawn.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
@@ -22,11 +23,36 @@
 namespace clm3d {
 namespace {
 
+// Sanitizer builds run 10-20x slower: they check fewer james yaws and search the photos reduced
+// (the figures in docs/initialisation.md come from the full checks).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// Photos are searched at full resolution (dlib finds Walter in the 1920x1080 breakingbad only
+// there, not reduced to 1280 or 1024 wide); sanitizer builds reduce them to 1024 for time.
 std::vector<FaceDetector> detectorsToCheck() {
+  FaceDetectorSettings settings;
+  if (kSanitized) settings.maxImageSide = 1024;
   std::vector<FaceDetector> detectors;
-  detectors.emplace_back(DetectorKind::Cascade);
-  if (FaceDetector::available(DetectorKind::DlibHog)) detectors.emplace_back(DetectorKind::DlibHog);
+  detectors.emplace_back(DetectorKind::Cascade, settings);
+  if (FaceDetector::available(DetectorKind::DlibHog)) {
+    detectors.emplace_back(DetectorKind::DlibHog, settings);
+  }
   return detectors;
+}
+
+std::vector<double> jamesYaws() {
+  if (kSanitized) return {-45.0, 0.0, 45.0};
+  return {-60.0, -45.0, -30.0, -15.0, 0.0, 15.0, 30.0, 45.0, 60.0};
 }
 
 // Mean distance between the start's points and the truth over the truth's present points.
@@ -61,7 +87,7 @@ TEST(StartAccuracy, JamesRenders) {
   for (FaceDetector& detector : detectors) {
     double frontalSum = 0.0, turnedSum = 0.0;
     int frontalCount = 0, turnedCount = 0, scenes = 0;
-    for (const double yaw : {-60.0, -45.0, -30.0, -15.0, 0.0, 15.0, 30.0, 45.0, 60.0}) {
+    for (const double yaw : jamesYaws()) {
       // james's face looks along (0.102, 0, 0.995) in the scan's coordinates (its README), i.e. at
       // +6 degrees of yaw: rendering at yaw - 6 makes the grid's yaw the face's own.
       const test::Scene scene = test::renderScene(renderer, landmarks, camera, 0.0, yaw - 6.0, 0.0,
@@ -87,12 +113,15 @@ TEST(StartAccuracy, JamesRenders) {
         ++turnedCount;
       }
     }
+    const int frontalScenes = kSanitized ? 1 : 3;
     std::printf(
         "james %s: |yaw| <= 15: %d/%d found, mean error %.3f; |yaw| 30-60: %d/%d found, "
         "mean error %.3f\n",
-        detectorKindName(detector.kind()), frontalCount, 3, frontalSum / frontalCount, turnedCount,
-        scenes - 3, turnedCount ? turnedSum / turnedCount : 0.0);
-    EXPECT_GE(frontalCount, 2) << detectorKindName(detector.kind());
+        detectorKindName(detector.kind()), frontalCount, frontalScenes,
+        frontalCount ? frontalSum / frontalCount : 0.0, turnedCount, scenes - frontalScenes,
+        turnedCount ? turnedSum / turnedCount : 0.0);
+    // Every near-frontal view but at most one is found.
+    EXPECT_GE(frontalCount, std::max(1, frontalScenes - 1)) << detectorKindName(detector.kind());
     if (frontalCount > 0) {
       EXPECT_LT(frontalSum / frontalCount, 0.2);
     }
