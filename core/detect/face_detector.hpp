@@ -21,10 +21,14 @@ const char* detectorKindName(DetectorKind kind);
 DetectorKind parseDetectorKind(const std::string& name);
 
 struct FaceBox {
-  cv::Rect2d box;         // input pixels (OpenCV convention: x, y of the top-left corner)
-  double score = 0.0;     // cascade: merged raw detections; dlib: detection confidence
-  bool profile = false;   // found by a profile detector: the head is turned far to one side
-  bool mirrored = false;  // the profile detector ran on the flipped image
+  cv::Rect2d box;      // input pixels (OpenCV convention: x, y of the top-left corner)
+  double score = 0.0;  // cascade: merged raw detections; dlib: detection confidence
+  // Found by a profile detector (the cascade's profile cascade: heads turned ~30-75 degrees;
+  // dlib's side-view filters: ~15-60 degrees). Not mirrored: turned towards the image's left
+  // (negative yaw); mirrored: the profile cascade ran on the flipped image, or dlib's
+  // right-turned filter fired (positive yaw).
+  bool profile = false;
+  bool mirrored = false;
   DetectorKind detector = DetectorKind::Cascade;  // which detector found it (calibration differs)
 };
 
