@@ -122,7 +122,7 @@ TEST(FitCli, UnknownOptimiserListsTheValidOnes) {
 
 TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
   const FitFiles& f = fitFiles();
-  const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
   SequenceSettings settings;
   settings.yawFromDeg = 0.0;
   settings.yawToDeg = 10.0;

@@ -1,14 +1,18 @@
 // A small trained model and rendered scenes with exact truth, for the tests of fitting,
 // initialisation and tracking: procedural heads (seeds 1-4) train a 3-view (yaw -30, 0, +30),
-// 2-scale model with 12x12 patches once per test process (a few seconds), and a scene is a render
-// of one of those heads (or a held-out one) at a known pose with its true landmark positions and
-// the model state nearest to them. Header-only; link clm3d::fit, clm3d::train, clm3d::synth and
-// clm3d::render.
+// 2-scale model with 12x12 patches once per test binary (a few seconds; cached on disk), and a
+// scene is a render of one of those heads (or a held-out one) at a known pose with its true
+// landmark positions and the model state nearest to them. Header-only; link clm3d::fit,
+// clm3d::train, clm3d::synth and clm3d::render.
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
+#include <filesystem>
+#include <mutex>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/fit/fit_state.hpp"
@@ -17,22 +21,30 @@
 #include "core/geometry/procrustes.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/model/clm_model.hpp"
+#include "core/model/model_file.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/train/trainer.hpp"
 
 namespace clm3d::test {
 
-inline const std::vector<SynthHead>& fitTestHeads() {
-  static const std::vector<SynthHead> heads = [] {
-    std::vector<SynthHead> result;
-    const SynthOptions options{1.5, 512};
-    for (std::uint64_t seed : {1u, 2u, 3u, 4u, 101u}) {
-      result.push_back(generateHead(seed, {}, options));
-    }
-    return result;
-  }();
-  return heads;
+// Fixture head i (seeds 1, 2, 3, 4 and the held-out 101), generated on first use.
+inline const SynthHead& fitTestHead(int i) {
+  static std::array<std::optional<SynthHead>, 5> heads;
+  static std::mutex mutex;
+  const std::lock_guard lock(mutex);
+  static constexpr std::array<std::uint64_t, 5> kSeeds{1, 2, 3, 4, 101};
+  auto& head = heads.at(static_cast<std::size_t>(i));
+  if (!head) head = generateHead(kSeeds[static_cast<std::size_t>(i)], {}, SynthOptions{1.5, 512});
+  return *head;
+}
+
+// fitTestHeads()[i] is fitTestHead(i).
+struct FitTestHeads {
+  const SynthHead& operator[](int i) const { return fitTestHead(i); }
+};
+inline FitTestHeads fitTestHeads() {
+  return {};
 }
 
 // Index of the head that no fixture model was trained on.
@@ -56,22 +68,52 @@ inline TrainSettings fitTestSettings(bool singleView) {
 inline ClmModel trainFitTestModel(bool singleView) {
   TrainingInput input;
   input.schemeJson = schemeJsonFor("thesis25");
-  const auto& heads = fitTestHeads();
   for (int i = 0; i < kHeldOutHead; ++i) {
-    input.subjects.push_back({"head" + std::to_string(i + 1), &heads[i].mesh, &heads[i].landmarks});
+    const SynthHead& head = fitTestHead(i);
+    input.subjects.push_back({"head" + std::to_string(i + 1), &head.mesh, &head.landmarks});
   }
   input.datasetName = "fit-fixture";
   input.toolVersion = "test";
   return trainModel(input, fitTestSettings(singleView));
 }
 
-// The 3D multi-view model and the 2D single-view baseline, trained once per process.
+// ctest runs every test in its own process, so a model trained per process would be trained once
+// per test (a minute each under ASan). The model is cached beside the test binaries, keyed by the
+// running executable's modification time: relinking (any code change) trains it afresh.
+inline ClmModel cachedFitTestModel(bool singleView) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const auto stamp = fs::last_write_time("/proc/self/exe", error);
+  const fs::path cache =
+      fs::path(CLM3D_BINARY_DIR) / "test-cache" /
+      ("fit-fixture-" + fs::read_symlink("/proc/self/exe", error).filename().string() + "-" +
+       std::to_string(stamp.time_since_epoch().count()) + (singleView ? "-2d" : "-3d") + ".clm3d");
+  if (!error && fs::exists(cache)) {
+    try {
+      return loadModel(cache);
+    } catch (const std::exception&) {
+      // A damaged cache file is retrained below.
+    }
+  }
+  ClmModel model = trainFitTestModel(singleView);
+  if (!error) {
+    fs::create_directories(cache.parent_path(), error);
+    try {
+      saveModel(model, cache);  // atomic: a concurrent reader never sees half a file
+    } catch (const std::exception&) {
+      // Caching is an optimisation only.
+    }
+  }
+  return model;
+}
+
+// The 3D multi-view model and the 2D single-view baseline.
 inline const ClmModel& fitTestModel() {
-  static const ClmModel model = trainFitTestModel(false);
+  static const ClmModel model = cachedFitTestModel(false);
   return model;
 }
 inline const ClmModel& fitTestModel2D() {
-  static const ClmModel model = trainFitTestModel(true);
+  static const ClmModel model = cachedFitTestModel(true);
   return model;
 }
 
@@ -88,7 +130,7 @@ struct FitScene {
 // A render of head `head` at (pitch, yaw) degrees, 320x240, inter-ocular about `interOcularPixels`.
 inline FitScene makeFitScene(const ClmModel& model, double pitchDeg, double yawDeg, int head = 0,
                              double interOcularPixels = 60.0) {
-  const SynthHead& subject = fitTestHeads()[static_cast<std::size_t>(head)];
+  const SynthHead& subject = fitTestHead(head);
   FitScene scene;
   scene.camera = Camera::fromVerticalFov(320, 240, 40.0);
   const Eigen::Matrix3Xd truth3 = subject.landmarks.matrix();

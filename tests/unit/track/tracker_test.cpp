@@ -34,7 +34,7 @@ double frameError(const Eigen::Matrix2Xd& predicted, const Eigen::Matrix2Xd& tru
 
 TEST(Tracker, FollowsAHeldOutHeadFromTheFirstFrame) {
   const ClmModel& model = test::fitTestModel();
-  const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
   SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), shortSequence(20.0));
   TrackerSettings settings;
   Tracker tracker(model, sequence.camera(), settings);
