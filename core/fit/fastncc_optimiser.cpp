@@ -71,22 +71,12 @@ class FastNccOptimiser final : public Optimiser {
       e_[i] -= prior * p[i];
       system_(i, i) += kDamping * system_(i, i) + prior + floor;
     }
-    for (int i = 0; i < params; ++i) {
-      if (!linear_.fixed(i)) continue;
-      system_.row(i).setZero();
-      system_.col(i).setZero();
-      system_(i, i) = 1.0;
-      b_[i] = 0.0;
-      e_[i] = 0.0;
-    }
+    linear_.pinFixed(system_, b_, &e_);
     ldlt_.compute(system_);
     maximiseLinearNcc(a, b_, c, e_, ldlt_, u_, w_, delta_, kMinKappa);
     if (!delta_.allFinite()) return;
     delta_ = -delta_;  // the template moved by delta: the image-side parameters move by -delta
-    const double limit = kMaxStepPatchFraction * problem.patchSize();
-    const double moved = linear_.maxDisplacement(delta_);
-    if (moved > limit) delta_ *= limit / moved;
-    p += delta_;
+    linear_.applyLimitedStep(p, delta_, kMaxStepPatchFraction * problem.patchSize());
   }
 
  private:

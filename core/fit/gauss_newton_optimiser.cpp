@@ -68,20 +68,11 @@ class GaussNewtonOptimiser final : public Optimiser {
       rhs_[i] -= prior * p[i];
       system_(i, i) += kDamping * system_(i, i) + prior + floor;
     }
-    for (int i = 0; i < params; ++i) {
-      if (!linear_.fixed(i)) continue;
-      system_.row(i).setZero();
-      system_.col(i).setZero();
-      system_(i, i) = 1.0;
-      rhs_[i] = 0.0;
-    }
+    linear_.pinFixed(system_, rhs_);
     ldlt_.compute(system_);
     increment_ = ldlt_.solve(rhs_);
     if (!increment_.allFinite()) return;
-    const double limit = kMaxStepPatchFraction * problem.patchSize();
-    const double moved = linear_.maxDisplacement(increment_);
-    if (moved > limit) increment_ *= limit / moved;
-    p += increment_;
+    linear_.applyLimitedStep(p, increment_, kMaxStepPatchFraction * problem.patchSize());
   }
 
  private:

@@ -224,4 +224,23 @@ double InverseLinearisation::maxDisplacement(const Eigen::Ref<const Eigen::Vecto
   return largest;
 }
 
+void InverseLinearisation::pinFixed(Eigen::MatrixXd& system, Eigen::VectorXd& rhs,
+                                    Eigen::VectorXd* other) const {
+  for (int i = 0; i < paramCount(); ++i) {
+    if (!fixed(i)) continue;
+    system.row(i).setZero();
+    system.col(i).setZero();
+    system(i, i) = 1.0;
+    rhs[i] = 0.0;
+    if (other != nullptr) (*other)[i] = 0.0;
+  }
+}
+
+void InverseLinearisation::applyLimitedStep(Eigen::VectorXd& p, Eigen::VectorXd& dp,
+                                            double maxPixels) {
+  const double moved = maxDisplacement(dp);
+  if (moved > maxPixels) dp *= maxPixels / moved;
+  p += dp;
+}
+
 }  // namespace clm3d

@@ -86,6 +86,13 @@ class InverseLinearisation {
   void chain(const Eigen::Ref<const Eigen::VectorXd>& v, Eigen::Ref<Eigen::VectorXd> out) const;
   // Largest point displacement |J_k dp| over the landmarks (level pixels).
   double maxDisplacement(const Eigen::Ref<const Eigen::VectorXd>& dp);
+  // Pins the fixed parameters of a P x P system: their rows and columns become the identity's and
+  // their right-hand-side entries (in `rhs` and, when given, `other`) zero, so they do not move.
+  void pinFixed(Eigen::MatrixXd& system, Eigen::VectorXd& rhs,
+                Eigen::VectorXd* other = nullptr) const;
+  // p += dp, with dp first shortened so that no point moves more than maxPixels (the template's
+  // linearisation is not worth more than a few of its pixels).
+  void applyLimitedStep(Eigen::VectorXd& p, Eigen::VectorXd& dp, double maxPixels);
 
  private:
   const SearchProblem* problem_ = nullptr;
