@@ -359,12 +359,7 @@ FitState stateFromPoints(const ClmModel& model, const Camera& camera,
 
 Eigen::Matrix2Xd projectState(const ClmModel& model, const Camera& camera, const FitState& state) {
   checkShapeSize(model, state);
-  ShapeProjector projector(model.shape, camera);
-  projector.setInputPixels();
-  projector.setDepth(state.pose.translation.z());
-  Eigen::Matrix2Xd out(2, model.shape.pointCount());
-  projector.project(toParams(state), out);
-  return out;
+  return projectShape(model.shape, camera, state);
 }
 
 FitState initialiseFromImage(const ClmModel& model, const Camera& camera, const cv::Mat& image,

@@ -24,7 +24,7 @@
 //   it last returned, keeping its spread and weights; the first fit, or a change of the parameter
 //   count, initialises every particle around p (particle 0 at p). The random stream is a
 //   std::mt19937_64 seeded with settings.seed, so a run is reproducible.
-// No allocation per step once sized (ShapeProjector::unitSteps aside).
+// No allocation per step once sized.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -59,7 +59,7 @@ class CondensationOptimiser final : public Optimiser {
 
   void step(const SearchProblem& problem, Eigen::VectorXd& p) override {
     const int n = problem.paramCount();
-    steps_ = problem.projector().unitSteps(p);
+    problem.projector().unitSteps(p, steps_);
     if (!initialised_ || particles_.rows() != n) initialise(problem, p);
     if (recentred_) {
       for (int i = 0; i < count_; ++i) problem.clamp(particles_.col(i));

@@ -44,15 +44,13 @@ Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& s
       camera_(camera),
       settings_(settings),
       selector_(model, settings.viewHysteresisDeg),
-      problem_(model.shape, camera),
-      inputProjector_(model.shape, camera) {
+      problem_(model.shape, camera) {
   if (model.views.empty()) throw InputError("fit: the model has no views");
   settings_.validate(model);
   scales_ = settings_.scales > 0 ? settings_.scales : modelScales(model);
   optimiser_ = makeOptimiser(settings_.optimiser, settings_.optimiserSettings);
   problem_.setTextureModeLimit(settings_.textureModes);
   eyes_ = model.scheme().normalisationPair();
-  inputProjector_.setInputPixels();
   const PatchModel& finest = model.views.front().scales.front();
   targetInterOcular_ = finest.patchSize / model.patchRatio;
 }
@@ -64,10 +62,7 @@ FitState Fitter::meanState(const Pose& pose) const {
 }
 
 Eigen::Matrix2Xd Fitter::project(const FitState& state) const {
-  Eigen::Matrix2Xd points(2, model_->shape.pointCount());
-  inputProjector_.setDepth(state.pose.translation.z());
-  inputProjector_.project(toParams(state), points);
-  return points;
+  return projectShape(model_->shape, camera_, state);
 }
 
 FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentView) {

@@ -80,9 +80,8 @@ class Fitter {
   std::unique_ptr<Optimiser> optimiser_;
   SearchProblem problem_;
   WorkingImage working_;
-  mutable ShapeProjector inputProjector_;  // every landmark, input pixels
-  std::pair<int, int> eyes_;               // the scheme's normalisation pair
-  double targetInterOcular_ = 0.0;         // pixels at the finest scale, as in training
+  std::pair<int, int> eyes_;        // the scheme's normalisation pair
+  double targetInterOcular_ = 0.0;  // pixels at the finest scale, as in training
   std::vector<Eigen::VectorXf> lastTemplates_;
   double lastTemplatePixel_ = 1.0;
 };

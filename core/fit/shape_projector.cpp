@@ -64,21 +64,29 @@ void ShapeProjector::setInputPixels() {
   offset_ = {0.0, 0.0};
 }
 
+ShapeProjector::PixelMap ShapeProjector::pixelMap() const {
+  return {camera_.focalX() * gain_.x(), camera_.focalY() * gain_.y(),
+          (0.5 * camera_.width - 0.5) * gain_.x() + offset_.x(),
+          (0.5 * camera_.height - 0.5) * gain_.y() + offset_.y()};
+}
+
+Eigen::Vector3d ShapeProjector::modelPoint(int j,
+                                           const Eigen::Ref<const Eigen::VectorXd>& b) const {
+  return mean_.col(j) + modes_.middleRows(3 * j, 3) * b;
+}
+
 void ShapeProjector::project(const Eigen::Ref<const Eigen::VectorXd>& p,
                              Eigen::Ref<Eigen::Matrix2Xd> out) const {
   const Rotations r = rotations(p[kParamPitch], p[kParamYaw], p[kParamRoll]);
   const Eigen::Matrix3d sr = p[kParamScale] * (r.x * r.y * r.z);
   const Eigen::Vector3d t(p[kParamTx], p[kParamTy], depth_);
-  const double fx = camera_.focalX() * gain_.x(), fy = camera_.focalY() * gain_.y();
-  const double cx = (0.5 * camera_.width - 0.5) * gain_.x() + offset_.x();
-  const double cy = (0.5 * camera_.height - 0.5) * gain_.y() + offset_.y();
+  const PixelMap map = pixelMap();
   const auto b = p.tail(modeCount_);
   for (int j = 0; j < landmarkCount(); ++j) {
-    const Eigen::Vector3d s = mean_.col(j) + modes_.middleRows(3 * j, 3) * b;
-    const Eigen::Vector3d e = t + sr * s;
+    const Eigen::Vector3d e = t + sr * modelPoint(j, b);
     const double w = -e.z();
-    out(0, j) = cx + fx * e.x() / w;
-    out(1, j) = cy - fy * e.y() / w;
+    out(0, j) = map.cx + map.fx * e.x() / w;
+    out(1, j) = map.cy - map.fy * e.y() / w;
   }
 }
 
@@ -92,20 +100,18 @@ void ShapeProjector::jacobian(const Eigen::Ref<const Eigen::VectorXd>& p,
   const Eigen::Matrix3d dYaw = scale * (r.x * r.dy * r.z);
   const Eigen::Matrix3d dRoll = scale * (r.x * r.y * r.dz);
   const Eigen::Vector3d t(p[kParamTx], p[kParamTy], depth_);
-  const double fx = camera_.focalX() * gain_.x(), fy = camera_.focalY() * gain_.y();
-  const double cx = (0.5 * camera_.width - 0.5) * gain_.x() + offset_.x();
-  const double cy = (0.5 * camera_.height - 0.5) * gain_.y() + offset_.y();
+  const PixelMap map = pixelMap();
   const auto b = p.tail(modeCount_);
   for (int j = 0; j < landmarkCount(); ++j) {
-    const Eigen::Vector3d s = mean_.col(j) + modes_.middleRows(3 * j, 3) * b;
+    const Eigen::Vector3d s = modelPoint(j, b);
     const Eigen::Vector3d e = t + sr * s;
     const double w = -e.z();
-    // u = cx + fx ex / w, v = cy - fy ey / w with w = -ez: d(u, v)/de.
+    // d(u, v)/de of the pixel map with w = -ez.
     Eigen::Matrix<double, 2, 3> de;
-    de << fx / w, 0.0, fx * e.x() / (w * w), 0.0, -fy / w, -fy * e.y() / (w * w);
+    de << map.fx / w, 0.0, map.fx * e.x() / (w * w), 0.0, -map.fy / w, -map.fy * e.y() / (w * w);
     if (points != nullptr) {
-      (*points)(0, j) = cx + fx * e.x() / w;
-      (*points)(1, j) = cy - fy * e.y() / w;
+      (*points)(0, j) = map.cx + map.fx * e.x() / w;
+      (*points)(1, j) = map.cy - map.fy * e.y() / w;
     }
     auto rows = out.middleRows(2 * j, 2);
     rows.col(kParamTx) = de.col(0);
@@ -119,12 +125,19 @@ void ShapeProjector::jacobian(const Eigen::Ref<const Eigen::VectorXd>& p,
 }
 
 Eigen::VectorXd ShapeProjector::unitSteps(const Eigen::Ref<const Eigen::VectorXd>& p) const {
-  Eigen::MatrixXd j(2 * landmarkCount(), paramCount());
-  jacobian(p, j);
-  Eigen::VectorXd steps(paramCount());
+  Eigen::VectorXd steps;
+  unitSteps(p, steps);
+  return steps;
+}
+
+void ShapeProjector::unitSteps(const Eigen::Ref<const Eigen::VectorXd>& p,
+                               Eigen::VectorXd& steps) const {
+  stepJacobian_.resize(2 * landmarkCount(), paramCount());
+  jacobian(p, stepJacobian_);
+  steps.resize(paramCount());
   const double points = std::max(1, landmarkCount());
   for (int k = 0; k < paramCount(); ++k) {
-    const double rms = j.col(k).norm() / std::sqrt(points);
+    const double rms = stepJacobian_.col(k).norm() / std::sqrt(points);
     steps[k] = rms > 1e-12 ? 1.0 / rms : 0.0;
   }
   // A shape mode that barely moves the visible points must not get a step beyond its range.
@@ -133,7 +146,6 @@ Eigen::VectorXd ShapeProjector::unitSteps(const Eigen::Ref<const Eigen::VectorXd
     double& step = steps[shapeParam(k)];
     if (step > 0.0) step = std::min(step, sd);
   }
-  return steps;
 }
 
 void ShapeProjector::clamp(Eigen::Ref<Eigen::VectorXd> p) const {
@@ -150,6 +162,15 @@ void ShapeProjector::clamp(Eigen::Ref<Eigen::VectorXd> p) const {
     const double limit = shape_->limitSd * std::sqrt(std::max(shape_->variances[k], 0.0));
     p[shapeParam(k)] = std::clamp(p[shapeParam(k)], -limit, limit);
   }
+}
+
+Eigen::Matrix2Xd projectShape(const ShapeModel& shape, const Camera& camera,
+                              const FitState& state) {
+  ShapeProjector projector(shape, camera);
+  projector.setDepth(state.pose.translation.z());
+  Eigen::Matrix2Xd points(2, shape.pointCount());
+  projector.project(toParams(state), points);
+  return points;
 }
 
 }  // namespace clm3d

@@ -44,12 +44,23 @@ class ShapeProjector {
   // a parameter that does not move them (pitch and yaw of the planar model). Optimisers use these
   // as natural units (initial steps, particle spreads, simplex size).
   Eigen::VectorXd unitSteps(const Eigen::Ref<const Eigen::VectorXd>& p) const;
+  // The same into `out` (resized to paramCount()), allocating nothing once sized: for the
+  // optimisers that take unit steps on every iteration.
+  void unitSteps(const Eigen::Ref<const Eigen::VectorXd>& p, Eigen::VectorXd& out) const;
 
   // Keeps p valid: shape coefficients within the model's +-limitSd, scale positive, pitch and
   // yaw 0 for the planar model, angles within (-90, 90) degrees.
   void clamp(Eigen::Ref<Eigen::VectorXd> p) const;
 
  private:
+  // Eye coordinates to output pixels: u = cx + fx x / -z, v = cy - fy y / -z.
+  struct PixelMap {
+    double fx, fy, cx, cy;
+  };
+  PixelMap pixelMap() const;
+  // The subset's landmark j in model coordinates for the shape coefficients b.
+  Eigen::Vector3d modelPoint(int j, const Eigen::Ref<const Eigen::VectorXd>& b) const;
+
   const ShapeModel* shape_;
   Camera camera_;
   int modeCount_ = 0;
@@ -60,6 +71,10 @@ class ShapeProjector {
   Eigen::Vector2d gain_{1.0, 1.0};
   Eigen::Vector2d offset_{0.0, 0.0};
   double depth_ = -1000.0;
+  mutable Eigen::MatrixXd stepJacobian_;  // scratch of unitSteps
 };
+
+// Every landmark of the shape model at `state`, in input pixels of `camera` (2 x points).
+Eigen::Matrix2Xd projectShape(const ShapeModel& shape, const Camera& camera, const FitState& state);
 
 }  // namespace clm3d

@@ -4,7 +4,7 @@
 // points by about one pixel of the current pyramid level, so one step size, one tolerance and one
 // simplex size suit translation, scale, angles and shape alike. The value is -meanNcc, to be
 // minimised; clamping inside the evaluation makes the shape limits hard constraints. Allocates
-// nothing once sized (apart from ShapeProjector::unitSteps in reset()).
+// nothing once sized.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,7 +20,7 @@ class UnitStepObjective {
   void reset(const SearchProblem& problem, const Eigen::Ref<const Eigen::VectorXd>& p0) {
     problem_ = &problem;
     origin_ = p0;
-    steps_ = problem.projector().unitSteps(p0);
+    problem.projector().unitSteps(p0, steps_);
     active_.clear();
     for (Eigen::Index k = 0; k < steps_.size(); ++k) {
       if (steps_[k] > 0.0) active_.push_back(static_cast<int>(k));
