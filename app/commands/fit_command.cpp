@@ -31,19 +31,7 @@ void runFit(const FitArgs& args) {
   const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, args.fit.fovDeg);
   FitState start;
   if (!args.init.empty()) {
-    const LandmarkSet given = readLandmarks(args.init, &scheme);
-    Eigen::Matrix2Xd points(2, given.size());
-    std::vector<bool> present(static_cast<std::size_t>(given.size()));
-    for (int i = 0; i < given.size(); ++i) {
-      present[static_cast<std::size_t>(i)] = given.has(i);
-      points.col(i) =
-          given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
-    }
-    try {
-      start = stateFromPoints(model, camera, points, present);
-    } catch (const InputError& e) {
-      throw InputError(fileMessage(args.init, e.what()));
-    }
+    start = startFromPointsFile(model, camera, args.init);
   } else {
     FaceDetector detector(args.fit.detectorKind());
     try {

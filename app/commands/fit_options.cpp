@@ -1,8 +1,10 @@
 #include "app/commands/fit_options.hpp"
 
 #include "core/common/error.hpp"
+#include "core/detect/initialisation.hpp"
 #include "core/fit/optimiser.hpp"
 #include "core/geometry/camera.hpp"
+#include "core/scheme/landmark_file.hpp"
 
 namespace clm3d::cli {
 
@@ -55,6 +57,24 @@ void addFitOptions(CLI::App& command, FitOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
   command.add_option("--seed", options.seed, "random seed (condensation)")->capture_default_str();
+}
+
+FitState startFromPointsFile(const ClmModel& model, const Camera& camera,
+                             const std::filesystem::path& path) {
+  const Scheme scheme = model.scheme();
+  const LandmarkSet given = readLandmarks(path, &scheme);
+  Eigen::Matrix2Xd points(2, given.size());
+  std::vector<bool> present(static_cast<std::size_t>(given.size()));
+  for (int i = 0; i < given.size(); ++i) {
+    present[static_cast<std::size_t>(i)] = given.has(i);
+    points.col(i) =
+        given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
+  }
+  try {
+    return stateFromPoints(model, camera, points, present);
+  } catch (const InputError& e) {
+    throw InputError(fileMessage(path, e.what()));
+  }
 }
 
 }  // namespace clm3d::cli

@@ -3,10 +3,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
 
 #include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/model/clm_model.hpp"
 
 namespace clm3d::cli {
 
@@ -26,5 +29,10 @@ struct FitOptions {
 };
 
 void addFitOptions(CLI::App& command, FitOptions& options);
+
+// The start state of `--init FILE`: the model fitted to the file's points (.pts, .ljson, .csv;
+// 68-point files converted). Problems are InputErrors that name the file.
+FitState startFromPointsFile(const ClmModel& model, const Camera& camera,
+                             const std::filesystem::path& path);
 
 }  // namespace clm3d::cli

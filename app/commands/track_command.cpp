@@ -54,15 +54,7 @@ void runTrack(const TrackArgs& args) {
     VideoReader probe(args.video);  // fails early, naming the file, if it is not a video
     const Camera camera = Camera::fromVerticalFov(probe.width(), probe.height(), args.fit.fovDeg);
     if (!args.init.empty()) {
-      const LandmarkSet given = readLandmarks(args.init, &scheme);
-      Eigen::Matrix2Xd points(2, given.size());
-      std::vector<bool> present(static_cast<std::size_t>(given.size()));
-      for (int i = 0; i < given.size(); ++i) {
-        present[static_cast<std::size_t>(i)] = given.has(i);
-        points.col(i) =
-            given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
-      }
-      initial = stateFromPoints(model, camera, points, present);
+      initial = startFromPointsFile(model, camera, args.init);
     }
     if (!args.overlay.empty()) {
       overlay =
