@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/fit/optimiser.hpp"
+#include "tests/unit/fit/inverse_step_check.hpp"
 #include "tests/unit/fit/recovery_check.hpp"
 #include "tests/unit/fit/synthetic_problem.hpp"
 
@@ -60,36 +61,7 @@ TEST(GaussNewtonOptimiser, RegisteredByName) {
 }
 
 TEST(GaussNewtonOptimiser, StepsTowardsTheTruthInverseSign) {
-  // Templates at the truth; from a start off in translation, rotation and shape, one step must
-  // remove most of the point error (with the forward sign it would double it), a few more all of
-  // it.
-  for (const bool planar : {false, true}) {
-    for (const bool masked : {false, true}) {
-      const auto s = test::makeSyntheticProblem(planar, masked);
-      OptimiserSettings settings;
-      settings.shapePrior = 0.0;  // the exact answer is the truth
-      auto optimiser = makeOptimiser("gauss-newton", settings);
-      Eigen::VectorXd p = s->truth;
-      p[kParamTx] += 1.5;
-      p[kParamTy] -= 1.0;
-      p[kParamRoll] += 0.02;
-      p[shapeParam(0)] += 1.0;
-      const double start = s->meanError(p);
-      optimiser->beginFit(p);
-      optimiser->step(*s->problem, p);
-      s->problem->clamp(p);
-      EXPECT_LT(s->meanError(p), 0.4 * start) << "planar " << planar << " masked " << masked;
-      for (int i = 0; i < 5; ++i) {
-        optimiser->step(*s->problem, p);
-        s->problem->clamp(p);
-      }
-      EXPECT_LT(s->meanError(p), 0.01) << "planar " << planar << " masked " << masked;
-      if (planar) {
-        EXPECT_EQ(p[kParamPitch], 0.0);
-        EXPECT_EQ(p[kParamYaw], 0.0);
-      }
-    }
-  }
+  test::expectStepsTowardsTheTruth("gauss-newton");
 }
 
 TEST(GaussNewtonOptimiser, TranslationAloneGivesTheOppositeTemplateShift) {
