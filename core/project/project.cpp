@@ -1,0 +1,127 @@
+#include "core/project/project.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/error.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr const char* kFormat = "clm3d-project";
+constexpr int kVersion = 1;
+
+fs::path normalised(const fs::path& p) {
+  return fs::absolute(p).lexically_normal();
+}
+
+// Relative to the folder when inside it, absolute otherwise.
+std::string stored(const fs::path& folder, const fs::path& p) {
+  const fs::path relative = normalised(p).lexically_relative(folder);
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return normalised(p).generic_string();
+}
+
+std::vector<fs::path> readList(const json& doc, const char* key, const Project& project,
+                               const fs::path& file) {
+  std::vector<fs::path> out;
+  if (!doc.contains(key)) return out;
+  const json& list = doc.at(key);
+  if (!list.is_array())
+    throw InputError(fileMessage(file, std::string("'") + key + "' must be a list"));
+  for (const json& entry : list) {
+    if (!entry.is_string() || entry.get<std::string>().empty()) {
+      throw InputError(fileMessage(file, std::string("'") + key + "' must hold non-empty paths"));
+    }
+    project.addUnique(out, entry.get<std::string>());
+  }
+  return out;
+}
+
+}  // namespace
+
+fs::path Project::resolve(const fs::path& p) const {
+  return p.is_absolute() ? p.lexically_normal() : (folder / p).lexically_normal();
+}
+
+bool Project::addUnique(std::vector<fs::path>& list, const fs::path& p) const {
+  const fs::path resolved = resolve(p);
+  if (std::find(list.begin(), list.end(), resolved) != list.end()) return false;
+  list.push_back(resolved);
+  return true;
+}
+
+Project loadProject(const fs::path& folderOrFile) {
+  const fs::path file =
+      fs::is_directory(folderOrFile) ? folderOrFile / Project::kFileName : folderOrFile;
+  if (!fs::exists(file)) {
+    throw InputError(fileMessage(
+        file, "no clm3d project here (" + std::string(Project::kFileName) + " is missing)"));
+  }
+  json doc;
+  try {
+    doc = json::parse(readTextFile(file));
+  } catch (const json::parse_error& e) {
+    throw InputError(fileMessage(file, std::string("not valid JSON: ") + e.what()));
+  }
+  if (!doc.is_object() || doc.value("format", std::string()) != kFormat) {
+    throw InputError(
+        fileMessage(file, "not a clm3d project (\"format\" must be \"clm3d-project\")"));
+  }
+  if (!doc.contains("version") || !doc.at("version").is_number_integer() ||
+      doc.at("version").get<int>() != kVersion) {
+    throw InputError(fileMessage(file, "unsupported project version (this clm3d reads version " +
+                                           std::to_string(kVersion) + ")"));
+  }
+  Project project;
+  project.folder = normalised(file.parent_path().empty() ? fs::path(".") : file.parent_path());
+  try {
+    project.name = doc.value("name", project.folder.filename().string());
+    const std::string manifest = doc.value("manifest", std::string());
+    if (!manifest.empty()) project.manifest = project.resolve(manifest);
+  } catch (const json::type_error&) {
+    throw InputError(fileMessage(file, "\"name\" and \"manifest\" must be strings"));
+  }
+  project.models = readList(doc, "models", project, file);
+  project.videos = readList(doc, "videos", project, file);
+  project.tracks = readList(doc, "tracks", project, file);
+  project.groundTruth = readList(doc, "ground_truth", project, file);
+  return project;
+}
+
+void saveProject(const Project& project) {
+  const fs::path folder = normalised(project.folder);
+  fs::create_directories(folder);
+  json doc;
+  doc["format"] = kFormat;
+  doc["version"] = kVersion;
+  doc["name"] = project.name.empty() ? folder.filename().string() : project.name;
+  doc["manifest"] = project.manifest.empty() ? std::string() : stored(folder, project.manifest);
+  const auto list = [&](const std::vector<fs::path>& paths) {
+    json out = json::array();
+    for (const fs::path& p : paths) out.push_back(stored(folder, project.resolve(p)));
+    return out;
+  };
+  doc["models"] = list(project.models);
+  doc["videos"] = list(project.videos);
+  doc["tracks"] = list(project.tracks);
+  doc["ground_truth"] = list(project.groundTruth);
+  writeTextAtomically(folder / Project::kFileName, doc.dump(2) + "\n");
+}
+
+Project createProject(const fs::path& folder, const std::string& name) {
+  Project project;
+  project.folder = normalised(folder);
+  if (fs::exists(project.file())) {
+    throw InputError(fileMessage(project.file(), "a project exists here already; open it instead"));
+  }
+  project.name = name.empty() ? project.folder.filename().string() : name;
+  saveProject(project);
+  return project;
+}
+
+}  // namespace clm3d
