@@ -1,0 +1,56 @@
+// Helpers for the QTest GUI tests: a watchdog that measures the longest stall of the GUI thread's
+// event loop (the "no stall over 100 ms during training or tracking"), waiting on a
+// condition while events run, closing the modal error dialog a test expects, and paths.
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <filesystem>
+#include <functional>
+
+namespace clm3d::test {
+
+// Ticks every 5 ms on the thread it lives on; the longest gap between ticks, minus the period, is
+// how long the event loop could not run.
+class StallWatchdog : public QObject {
+  Q_OBJECT
+ public:
+  explicit StallWatchdog(QObject* parent = nullptr);
+  void start();
+  void stop();
+  double longestStallMs() const { return longestMs_; }
+  int ticks() const { return ticks_; }
+
+ private:
+  QTimer timer_;
+  QElapsedTimer clock_;
+  qint64 lastMs_ = -1;
+  double longestMs_ = 0.0;
+  int ticks_ = 0;
+};
+
+// Runs the event loop until done() is true or timeoutMs passes; returns done().
+bool waitUntil(const std::function<bool()>& done, int timeoutMs);
+
+// Arms a check that closes the next modal error dialog (object name "errorDialog") and stores its
+// informative text in *message. Call before the action that should fail.
+void expectErrorDialog(QString* message, int timeoutMs = 10000);
+
+std::filesystem::path fixturePath(const std::string& relative);
+std::filesystem::path binaryDir();
+// A fresh folder under the system temp directory, removed on destruction.
+class TempFolder {
+ public:
+  TempFolder();
+  ~TempFolder();
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace clm3d::test
