@@ -1,5 +1,6 @@
 #include "core/track/track_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -91,6 +92,52 @@ class RowReader {
   const std::vector<std::string>& header_;
 };
 
+// Extra cells are written as they are, so they must not need CSV quoting.
+bool needsQuoting(std::string_view text) {
+  return text.find_first_of(",\"\r\n") != std::string_view::npos ||
+         text::trim(text).size() != text.size();
+}
+
+bool isTrackerColumn(const std::string& name, int landmarkCount) {
+  if (name == "frame" || name == "timestamp" || name == "success" || name == "confidence" ||
+      name == "view") {
+    return true;
+  }
+  for (const char* pose : kPoseColumns) {
+    if (name == pose) return true;
+  }
+  // x_i / y_i with i in 1..landmarkCount, written without sign or leading zero.
+  if (name.size() < 3 || (name[0] != 'x' && name[0] != 'y') || name[1] != '_' || name[2] == '0') {
+    return false;
+  }
+  int index = 0;
+  const auto* end = name.data() + name.size();
+  const auto [ptr, ec] = std::from_chars(name.data() + 2, end, index);
+  return ec == std::errc() && ptr == end && index >= 1 && index <= landmarkCount;
+}
+
+void checkExtraColumns(const TrackTable& table) {
+  for (std::size_t k = 0; k < table.extraColumns.size(); ++k) {
+    const auto& name = table.extraColumns[k];
+    if (name.empty() || needsQuoting(name)) {
+      throw Error("track table: extra column name \"" + name +
+                  "\" is empty or holds a comma, quote, line break or outer space");
+    }
+    if (isTrackerColumn(name, table.landmarkCount) ||
+        std::find(table.extraColumns.begin(), table.extraColumns.begin() + static_cast<long>(k),
+                  name) != table.extraColumns.begin() + static_cast<long>(k)) {
+      throw Error("track table: extra column " + name + " repeats a column");
+    }
+  }
+}
+
+void checkExtraCell(const std::string& cell, const std::string& column, int frame) {
+  if (needsQuoting(cell)) {
+    throw Error("track table: frame " + std::to_string(frame) + ", column " + column + ": \"" +
+                cell + "\" holds a comma, quote, line break or outer space");
+  }
+}
+
 }  // namespace
 
 std::string formatTrackTable(const TrackTable& table) {
@@ -100,6 +147,8 @@ std::string formatTrackTable(const TrackTable& table) {
   for (const char* name : kPoseColumns) out += std::string(",") + name;
   for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
   for (int i = 1; i <= n; ++i) out += ",y_" + std::to_string(i);
+  checkExtraColumns(table);
+  for (const auto& name : table.extraColumns) out += ',' + name;
   out += '\n';
 
   for (const auto& row : table.rows) {
@@ -134,6 +183,18 @@ std::string formatTrackTable(const TrackTable& table) {
       for (int i = 0; i < n; ++i) {
         out += ',';
         if (present(i)) appendFixed(out, row.points(axis, i), 4);
+      }
+    }
+    if (row.extraCells.size() > table.extraColumns.size()) {
+      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                  std::to_string(row.extraCells.size()) + " extra cells, expected at most " +
+                  std::to_string(table.extraColumns.size()));
+    }
+    for (std::size_t k = 0; k < table.extraColumns.size(); ++k) {
+      out += ',';
+      if (k < row.extraCells.size()) {
+        checkExtraCell(row.extraCells[k], table.extraColumns[k], row.frame);
+        out += row.extraCells[k];
       }
     }
     out += '\n';
@@ -219,6 +280,15 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
 
   TrackTable table;
   table.landmarkCount = n;
+  // Every named column the table does not use is kept as text.
+  std::vector<int> extraColumns;
+  for (int column = 0; column < static_cast<int>(header.size()); ++column) {
+    const auto& name = header[static_cast<std::size_t>(column)];
+    if (!name.empty() && !isTrackerColumn(name, n)) {
+      extraColumns.push_back(column);
+      table.extraColumns.push_back(name);
+    }
+  }
   std::unordered_map<int, int> lineOfFrame;
   for (; next < lines.size(); ++next) {
     const auto& line = lines[next];
@@ -284,6 +354,7 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
       row.points(0, i) = x;
       row.points(1, i) = y;
     }
+    for (const int column : extraColumns) row.extraCells.emplace_back(reader.cell(column));
     table.rows.push_back(std::move(row));
   }
   return table;

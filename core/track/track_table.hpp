@@ -15,32 +15,39 @@
 namespace clm3d {
 
 struct TrackRow {
-  int frame = 0;           // 0-based frame index in the video
-  double timestamp = 0.0;  // seconds from the start of the video
-  bool success = false;    // the tracker believes the landmarks are on the face
-  double confidence = 0.0; // mean NCC of the landmarks' patches in [-1, 1]; 1 for ground truth
-  int view = -1;           // index of the model view used; -1 if none
+  int frame = 0;             // 0-based frame index in the video
+  double timestamp = 0.0;    // seconds from the start of the video
+  bool success = false;      // the tracker believes the landmarks are on the face
+  double confidence = 0.0;   // mean NCC of the landmarks' patches in [-1, 1]; 1 for ground truth
+  int view = -1;             // index of the model view used; -1 if none
   std::optional<Pose> pose;  // absent when the frame has no fit
   // 2 x n pixels (OpenCV convention, 0-based, pixel centres at integers); a NaN column is a
   // landmark without a position (written as empty cells).
   Eigen::Matrix2Xd points;
+  // One text cell per TrackTable::extraColumns entry (fewer: the rest are empty).
+  std::vector<std::string> extraCells{};
 };
 
 struct TrackTable {
   int landmarkCount = 0;  // n: columns x_1..x_n, y_1..y_n
   std::vector<TrackRow> rows;
+  // Named columns beyond the tracker's, written after y_n in this order, so a file can carry
+  // more per frame (a ground truth's "keyframe" flag) and still read as a plain track table.
+  std::vector<std::string> extraColumns{};
 };
 
 // Columns, in order: frame, timestamp, success (0/1), confidence, view, tx, ty, tz, scale,
-// pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n. Missing values are empty cells. Written
-// atomically (temporary file, then rename). Throws Error if a row's point count is not
-// landmarkCount.
+// pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n, then the extra columns. Missing values are empty
+// cells. Written atomically (temporary file, then rename). Throws Error if a row's point count is
+// not landmarkCount, a row has more extra cells than there are extra columns, or an extra column's
+// name or cell is empty (names only), holds a comma, quote or line break, or repeats a column.
 void writeTrackTable(const std::filesystem::path& path, const TrackTable& table);
 std::string formatTrackTable(const TrackTable& table);
 
 // Reads a table written by writeTrackTable (or by another tool with the same header; column order
-// is taken from the header, extra columns are ignored). Throws InputError naming the file, the
-// line and the column for a missing column, a malformed number or a wrong cell count.
+// is taken from the header). Throws InputError naming the file, the
+// line and the column for a missing column, a malformed number or a wrong cell count. Columns the
+// table does not use come back as extraColumns (header order, named ones only) with their cells.
 TrackTable readTrackTable(const std::filesystem::path& path);
 TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
 

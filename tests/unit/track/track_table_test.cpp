@@ -129,6 +129,49 @@ TEST(TrackTable, ReadsColumnsByNameInAnyOrderWithExtras) {
   EXPECT_EQ(table.rows[1].points(1, 1), 6.0);
 }
 
+TEST(TrackTable, ExtraColumnsAreReadAndWrittenAfterThePoints) {
+  const std::string text =
+      "frame,success,note,x_1,y_1,keyframe\n"
+      "0,1,hello,1,2,1\n"
+      "1,0,,3,4,0\n";
+  const auto table = parseTrackTable(text, "extra.csv");
+  ASSERT_EQ(table.extraColumns, (std::vector<std::string>{"note", "keyframe"}));
+  EXPECT_EQ(table.rows[0].extraCells, (std::vector<std::string>{"hello", "1"}));
+  EXPECT_EQ(table.rows[1].extraCells, (std::vector<std::string>{"", "0"}));
+
+  const auto written = formatTrackTable(table);
+  EXPECT_EQ(written.substr(0, written.find('\n')),
+            "frame,timestamp,success,confidence,view,tx,ty,tz,scale,pitch,yaw,roll,x_1,y_1,"
+            "note,keyframe");
+  EXPECT_NE(written.find(",1.0000,2.0000,hello,1\n"), std::string::npos) << written;
+  EXPECT_EQ(formatTrackTable(parseTrackTable(written, "again.csv")), written);
+
+  // A row with fewer cells than columns gets empty ones.
+  TrackTable shorter = table;
+  shorter.rows[0].extraCells = {"x"};
+  EXPECT_NE(formatTrackTable(shorter).find(",x,\n"), std::string::npos);
+}
+
+TEST(TrackTable, WriterRejectsExtraColumnsItCannotWriteAsIs) {
+  TrackTable table;
+  table.landmarkCount = 1;
+  table.rows.emplace_back();
+  table.rows.back().points = Eigen::Matrix2Xd::Zero(2, 1);
+  for (const char* name : {"", "a,b", "x_1", "frame", "q\"uote"}) {
+    table.extraColumns = {name};
+    EXPECT_THROW(formatTrackTable(table), Error) << name;
+  }
+  table.extraColumns = {"note", "note"};
+  EXPECT_THROW(formatTrackTable(table), Error);
+  table.extraColumns = {"note"};
+  table.rows.back().extraCells = {"a,b"};
+  EXPECT_THROW(formatTrackTable(table), Error);
+  table.rows.back().extraCells = {"a", "b"};
+  EXPECT_THROW(formatTrackTable(table), Error);
+  table.rows.back().extraCells = {"x_2"};  // a cell may hold anything without quoting needs
+  EXPECT_NO_THROW(formatTrackTable(table));
+}
+
 TEST(TrackTable, WriterRejectsRowsWithTheWrongPointCount) {
   TrackTable table;
   table.landmarkCount = 2;
