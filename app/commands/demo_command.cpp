@@ -3,7 +3,8 @@
 // visibility-tested landmarks -> a contact sheet -> a 15-view, 3-scale model trained on the heads,
 // with its report -> a synthetic test sequence of a held-out head turning through +-60 degrees
 // -> tracking it (overlay video with the patches drawn in place) -> the evaluation against the
-// exact ground truth, whose summary ends the output.
+// exact ground truth, whose summary ends the output. The folder is also a clm3d project (a dataset
+// manifest of the heads, the model, the video, its track and ground truth) that clm3d-studio opens.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -16,12 +17,14 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "core/common/atomic_file.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_export.hpp"
 #include "core/model/model_file.hpp"
+#include "core/project/project.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
@@ -111,6 +114,30 @@ std::string viewName(const View& view) {
   return name.str();
 }
 
+struct DemoHeadFile {
+  fs::path mesh, landmarks;  // relative to the output folder
+  std::string subject, expression;
+};
+
+// dataset.json (docs/dataset.md) listing the training heads as scans, so the studio's annotate
+// and train pages open them like any scanned dataset. The names are the demo's own (no quoting
+// needed).
+fs::path writeDemoManifest(const fs::path& out, const std::vector<DemoHeadFile>& heads) {
+  std::ostringstream json;
+  json << "{\n  \"version\": 1,\n  \"name\": \"clm3d-demo-heads\",\n  \"scheme\": \"thesis25\",\n"
+       << "  \"scans\": [\n";
+  for (std::size_t i = 0; i < heads.size(); ++i) {
+    json << "    {\"mesh\": \"" << heads[i].mesh.generic_string() << "\", \"landmarks\": \""
+         << heads[i].landmarks.generic_string() << "\", \"subject\": \"" << heads[i].subject
+         << "\", \"expression\": \"" << heads[i].expression << "\"}"
+         << (i + 1 < heads.size() ? "," : "") << '\n';
+  }
+  json << "  ]\n}\n";
+  const fs::path path = out / "dataset.json";
+  writeTextAtomically(path, json.str());
+  return path;
+}
+
 void runDemo(const DemoArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const fs::path headsDir = args.out / "heads";
@@ -123,6 +150,7 @@ void runDemo(const DemoArgs& args) {
 
   std::cerr << "demo: generating " << args.heads << " procedural heads\n";
   std::vector<SynthHead> heads;
+  std::vector<DemoHeadFile> headFiles;
   for (int i = 0; i < args.heads; ++i) {
     const auto seed = static_cast<std::uint64_t>(i + 1);
     const std::string& expression = expressions[static_cast<std::size_t>(i) % expressions.size()];
@@ -130,6 +158,9 @@ void runDemo(const DemoArgs& args) {
     const fs::path stem = headsDir / ("head-" + std::to_string(seed));
     saveObj(heads.back().mesh, stem.string() + ".obj");
     writeLandmarks(stem.string() + ".ljson", heads.back().landmarks, scheme);
+    const std::string name = "head-" + std::to_string(seed);
+    headFiles.push_back({fs::path("heads") / (name + ".obj"), fs::path("heads") / (name + ".ljson"),
+                         name, expression});
     std::cerr << "  head " << seed << " (" << expression
               << "): " << heads.back().mesh.triangleCount() << " triangles -> " << stem.string()
               << ".obj\n";
@@ -293,9 +324,23 @@ void runDemo(const DemoArgs& args) {
   std::cout << "demo: done in " << std::setprecision(1) << total
             << " s. Contact sheet: " << sheet.string() << "; heads: " << headsDir.string()
             << "; renders and projected landmarks: " << rendersDir.string() << '\n';
+  // The output folder as a clm3d project, for clm3d-studio.
+  Project project;
+  project.folder = fs::absolute(args.out);
+  project.name = "clm3d demo";
+  // Absolute paths: a relative one would be taken as relative to the project folder.
+  project.manifest = fs::absolute(writeDemoManifest(args.out, headFiles));
+  project.models = {fs::absolute(modelPath)};
+  project.videos = {fs::absolute(files.video)};
+  project.tracks = {fs::absolute(tracksPath)};
+  project.groundTruth = {fs::absolute(files.truth)};
+  saveProject(project);
+
   std::cout << "\n"
             << formatReportText(report) << "\nevaluation plots: " << evalDir.string()
             << "\noverlay video: " << overlayPath.string() << '\n';
+  std::cout << "studio project: " << project.file().string()
+            << "; open it with: clm3d-studio --demo " << args.out.string() << '\n';
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 // clm3d demo end to end at a small size: heads, renders, training, the held-out test sequence,
-// tracking with the overlay, and the evaluation whose summary ends the output.
+// tracking with the overlay, and the evaluation whose summary ends the output; the output folder is
+// a clm3d project (with a dataset manifest of the heads) that the studio opens.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "core/dataset/manifest.hpp"
+#include "core/project/project.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -21,6 +24,31 @@ TEST(DemoCli, RunsTheWholeChainAndEndsWithTheErrorSummary) {
   const auto summary = result.output.find("error: mean");
   ASSERT_NE(summary, std::string::npos) << result.output;
   EXPECT_NE(result.output.find("overlay video:", summary), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("clm3d-studio --demo " + (dir / "demo").string()), std::string::npos)
+      << result.output;
+
+  const Project project = loadProject(dir / "demo");
+  EXPECT_TRUE(std::filesystem::equivalent(project.folder, dir / "demo"));
+  EXPECT_EQ(project.manifest, project.folder / "dataset.json");
+  ASSERT_EQ(project.models.size(), 1u);
+  EXPECT_EQ(project.models[0], project.folder / "model.clm3d");
+  ASSERT_EQ(project.videos.size(), 1u);
+  ASSERT_EQ(project.tracks.size(), 1u);
+  EXPECT_EQ(project.tracks[0], project.folder / "tracks.csv");
+  ASSERT_EQ(project.groundTruth.size(), 1u);
+  EXPECT_EQ(project.groundTruth[0], project.folder / "sequence" / "truth.csv");
+  for (const auto& file : {project.manifest, project.models[0], project.videos[0],
+                           project.tracks[0], project.groundTruth[0]}) {
+    EXPECT_TRUE(std::filesystem::is_regular_file(file)) << file;
+  }
+  // The manifest lists the two training heads as scans and passes the loader's checks.
+  const DatasetManifest manifest = loadManifest(project.manifest);
+  ASSERT_EQ(manifest.scans.size(), 2u);
+  EXPECT_TRUE(std::filesystem::equivalent(manifest.scans[0].mesh, dir / "demo/heads/head-1.obj"));
+  EXPECT_TRUE(
+      std::filesystem::equivalent(manifest.scans[1].landmarks, dir / "demo/heads/head-2.ljson"));
+  EXPECT_EQ(manifest.scans[0].subject, "head-1");
+  EXPECT_EQ(manifest.scheme, "thesis25");
 }
 
 }  // namespace
