@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addEvalCommand(app);
   clm3d::cli::addFitCommand(app);
   clm3d::cli::addTrackCommand(app);
+  clm3d::cli::addTruthCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -16,5 +16,6 @@ void addSynthCommand(CLI::App& root);
 void addEvalCommand(CLI::App& root);
 void addFitCommand(CLI::App& root);
 void addTrackCommand(CLI::App& root);
+void addTruthCommand(CLI::App& root);
 
 }  // namespace clm3d::cli
