@@ -1,0 +1,142 @@
+#include "ui/track/frame_view.hpp"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <cmath>
+
+namespace clm3d::ui {
+namespace {
+
+constexpr double kGrabRadius = 9.0;  // widget pixels around a landmark that start a drag
+
+}  // namespace
+
+FrameView::FrameView(QWidget* parent) : QWidget(parent) {
+  setMinimumSize(320, 240);
+  setMouseTracking(false);
+  setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+}
+
+void FrameView::setImage(const QImage& image) {
+  image_ = image;
+  update();
+}
+
+void FrameView::setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours) {
+  if (dragged_ >= 0) return;  // the drag in progress owns the points until release
+  points_ = points;
+  colours_ = colours;
+  update();
+}
+
+void FrameView::setLabel(const QString& text, bool keyframe) {
+  label_ = text;
+  keyframe_ = keyframe;
+  update();
+}
+
+QRectF FrameView::imageRect() const {
+  if (image_.isNull()) return {};
+  const double scale = std::min(width() / static_cast<double>(image_.width()),
+                                height() / static_cast<double>(image_.height()));
+  const double w = image_.width() * scale;
+  const double h = image_.height() * scale;
+  return {(width() - w) / 2.0, (height() - h) / 2.0, w, h};
+}
+
+QPointF FrameView::toWidget(const QPointF& framePoint) const {
+  const QRectF rect = imageRect();
+  if (rect.isEmpty()) return framePoint;
+  const double scale = rect.width() / image_.width();
+  // Pixel centres are at integers (OpenCV): pixel i spans [i - 0.5, i + 0.5].
+  return {rect.left() + (framePoint.x() + 0.5) * scale,
+          rect.top() + (framePoint.y() + 0.5) * scale};
+}
+
+QPointF FrameView::toFrame(const QPointF& widgetPoint) const {
+  const QRectF rect = imageRect();
+  if (rect.isEmpty()) return widgetPoint;
+  const double scale = rect.width() / image_.width();
+  return {(widgetPoint.x() - rect.left()) / scale - 0.5,
+          (widgetPoint.y() - rect.top()) / scale - 0.5};
+}
+
+int FrameView::landmarkAt(const QPointF& widgetPoint) const {
+  int best = -1;
+  double bestDistance = kGrabRadius;
+  for (int i = 0; i < points_.cols(); ++i) {
+    if (!points_.col(i).allFinite()) continue;
+    const QPointF p = toWidget({points_(0, i), points_(1, i)});
+    const double distance = std::hypot(p.x() - widgetPoint.x(), p.y() - widgetPoint.y());
+    if (distance <= bestDistance) {
+      bestDistance = distance;
+      best = i;
+    }
+  }
+  return best;
+}
+
+void FrameView::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  painter.fillRect(rect(), QColor(32, 32, 36));
+  if (image_.isNull()) {
+    painter.setPen(QColor(200, 200, 200));
+    painter.drawText(rect(), Qt::AlignCenter, tr("Open a video and a model, then Track."));
+    return;
+  }
+  painter.setRenderHint(QPainter::SmoothPixmapTransform);
+  painter.drawImage(imageRect(), image_);
+  painter.setRenderHint(QPainter::Antialiasing);
+  const double radius = std::clamp(imageRect().width() / 160.0, 3.0, 6.0);
+  for (int i = 0; i < points_.cols(); ++i) {
+    if (!points_.col(i).allFinite()) continue;
+    const QPointF p = toWidget({points_(0, i), points_(1, i)});
+    const QColor colour =
+        i < static_cast<int>(colours_.size()) ? colours_[static_cast<std::size_t>(i)] : Qt::green;
+    painter.setPen(QPen(Qt::black, 1.5));
+    painter.setBrush(colour);
+    painter.drawEllipse(p, i == dragged_ ? radius * 1.6 : radius,
+                        i == dragged_ ? radius * 1.6 : radius);
+  }
+  if (!label_.isEmpty()) {
+    QFont font = painter.font();
+    font.setBold(true);
+    painter.setFont(font);
+    const QRectF box = painter.boundingRect(QRectF(8, 8, width() - 16, 40), Qt::AlignLeft, label_);
+    painter.fillRect(box.adjusted(-4, -2, 4, 2), QColor(0, 0, 0, 160));
+    painter.setPen(keyframe_ ? QColor(255, 210, 60) : QColor(230, 230, 230));
+    painter.drawText(box, Qt::AlignLeft, label_);
+  }
+}
+
+void FrameView::mousePressEvent(QMouseEvent* event) {
+  if (!editable_ || event->button() != Qt::LeftButton) return;
+  dragged_ = landmarkAt(event->localPos());
+  if (dragged_ >= 0) {
+    dragStart_ = {points_(0, dragged_), points_(1, dragged_)};
+    setCursor(Qt::ClosedHandCursor);
+    update();
+  }
+}
+
+void FrameView::mouseMoveEvent(QMouseEvent* event) {
+  if (dragged_ < 0) return;
+  const QPointF p = toFrame(event->localPos());
+  points_(0, dragged_) = p.x();
+  points_(1, dragged_) = p.y();
+  update();
+}
+
+void FrameView::mouseReleaseEvent(QMouseEvent* event) {
+  if (dragged_ < 0 || event->button() != Qt::LeftButton) return;
+  const int index = dragged_;
+  const QPointF to = toFrame(event->localPos());
+  points_(0, index) = to.x();
+  points_(1, index) = to.y();
+  dragged_ = -1;
+  unsetCursor();
+  update();
+  if (to != dragStart_) emit landmarkMoved(index, dragStart_, to);
+}
+
+}  // namespace clm3d::ui

@@ -1,0 +1,58 @@
+// The frame being reviewed, scaled to fit the widget with its aspect kept, with the landmarks on
+// top in their region colours and the frame's label (view, confidence, keyframe). A landmark can be
+// dragged with the mouse: it follows the pointer and, on release, landmarkMoved reports where it
+// went in frame pixels, so the page turns a whole drag into one undo step.
+#pragma once
+
+#include <Eigen/Core>
+#include <QColor>
+#include <QImage>
+#include <QPointF>
+#include <QString>
+#include <QWidget>
+#include <vector>
+
+namespace clm3d::ui {
+
+class FrameView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit FrameView(QWidget* parent = nullptr);
+
+  void setImage(const QImage& image);
+  // 2 x n frame pixels (NaN columns are not drawn) and a colour per landmark.
+  void setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours);
+  void setLabel(const QString& text, bool keyframe);
+  void setEditable(bool editable) { editable_ = editable; }
+
+  // Where frame pixel p is in the widget, and back (for tests and drawing).
+  QPointF toWidget(const QPointF& framePoint) const;
+  QPointF toFrame(const QPointF& widgetPoint) const;
+  const Eigen::Matrix2Xd& landmarks() const { return points_; }
+
+  QSize sizeHint() const override { return {640, 480}; }
+
+ signals:
+  void landmarkMoved(int index, QPointF from, QPointF to);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+
+ private:
+  QRectF imageRect() const;
+  int landmarkAt(const QPointF& widgetPoint) const;
+
+  QImage image_;
+  Eigen::Matrix2Xd points_;
+  std::vector<QColor> colours_;
+  QString label_;
+  bool keyframe_ = false;
+  bool editable_ = true;
+  int dragged_ = -1;
+  QPointF dragStart_;
+};
+
+}  // namespace clm3d::ui

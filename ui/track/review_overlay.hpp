@@ -1,0 +1,29 @@
+// Drawing one reviewed frame with core's drawFitOverlay (the same drawing as `clm3d track
+// --overlay`): the shown points are the ground-truth row (the track, or the hand correction), the
+// patches come from one short search from the frame's stored fit state, which puts the fitter's
+// templates back (one iteration at the finest scale: a few ms at webcam sizes, measured by the
+// page). Used for the frame view's patches on the GUI thread and for the overlay export on a
+// worker.
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+#include <optional>
+
+#include "core/fit/fitter.hpp"
+#include "core/track/fit_overlay.hpp"
+#include "ui/track/track_session.hpp"
+
+namespace clm3d::ui {
+
+// The fitter settings of that short search.
+FitSettings overlaySearchSettings();
+
+// Draws on `bgr` (the frame, unchanged until the search has read it). Without a stored fit the
+// start is the state that best reproduces the shown points (stateFromPoints), when
+// `fitMissingStates`; otherwise such a frame gets no patches. A row without points draws the
+// label only.
+void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<FrameFit>& fit,
+                       Fitter& fitter, const Scheme& scheme, const FitOverlayOptions& options,
+                       bool fitMissingStates);
+
+}  // namespace clm3d::ui

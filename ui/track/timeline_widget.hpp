@@ -1,0 +1,50 @@
+// The review timeline under the frame: per-frame confidence as bars (failed frames red, frames not
+// tracked yet empty), the error against the ground truth as a line where it is known, keyframes as
+// gold marks, and the current-frame cursor. Clicking or dragging on it asks for that frame, so a
+// bad stretch of the track is found and reached at a glance.
+#pragma once
+
+#include <QWidget>
+#include <vector>
+
+namespace clm3d::ui {
+
+struct TimelineData {
+  int frameCount = 0;
+  std::vector<double> confidence;  // per tracked frame, in [-1, 1]; shorter = not tracked yet
+  std::vector<bool> success;       // per tracked frame
+  std::vector<bool> keyframe;      // per frame
+  std::vector<double> error;       // per frame, NaN where unknown
+};
+
+class TimelineWidget : public QWidget {
+  Q_OBJECT
+ public:
+  explicit TimelineWidget(QWidget* parent = nullptr);
+
+  void setData(TimelineData timeline);
+  void setCurrentFrame(int frame);
+  int currentFrame() const { return current_; }
+  // The frame under widget x, and the x of a frame's centre (for tests).
+  int frameAt(double x) const;
+  double xOf(int frame) const;
+
+  QSize sizeHint() const override { return {640, 110}; }
+  QSize minimumSizeHint() const override { return {200, 80}; }
+
+ signals:
+  void frameRequested(int frame);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+
+ private:
+  QRectF plotRect() const;
+
+  TimelineData data_;
+  int current_ = 0;
+};
+
+}  // namespace clm3d::ui

@@ -1,0 +1,99 @@
+#include "ui/track/track_jobs.hpp"
+
+#include "core/common/error.hpp"
+#include "core/detect/initialisation.hpp"
+#include "core/model/model_file.hpp"
+#include "core/track/retrack.hpp"
+#include "core/video/video_reader.hpp"
+#include "core/video/video_writer.hpp"
+#include "ui/track/review_overlay.hpp"
+
+namespace clm3d::ui {
+namespace {
+
+// Keeps the fit state of each tracked frame, indexed by frame from `first`.
+auto recordFits(std::vector<std::optional<FrameFit>>& fits) {
+  return [&fits](const cv::Mat&, const TrackStep& step, Tracker&) {
+    if (step.fit) {
+      fits.push_back(FrameFit{step.fit->state, step.fit->view});
+    } else {
+      fits.emplace_back();
+    }
+  };
+}
+
+}  // namespace
+
+JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path modelPath,
+                        std::shared_ptr<const ClmModel> model, TrackerSettings settings,
+                        std::shared_ptr<TrackOutcome> outcome) {
+  return [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
+          settings = std::move(settings),
+          outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
+    if (model) {
+      outcome->model = model;
+    } else {
+      progress(0.0, "loading the model");
+      outcome->model = std::make_shared<const ClmModel>(loadModel(modelPath));
+    }
+    cancel.throwIfCancelled();
+    outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
+                                  recordFits(outcome->fits), progress, &cancel);
+  };
+}
+
+JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const ClmModel> model,
+                          TrackerSettings settings, int corrected, Eigen::Matrix2Xd points,
+                          std::shared_ptr<RetrackOutcome> outcome) {
+  return [video = std::move(video), model = std::move(model), settings = std::move(settings),
+          corrected, points = std::move(points),
+          outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
+    VideoInfo info;
+    {
+      const VideoReader probe(video);
+      info.width = probe.width();
+      info.height = probe.height();
+    }
+    std::vector<bool> present(static_cast<std::size_t>(points.cols()));
+    for (int i = 0; i < points.cols(); ++i) {
+      present[static_cast<std::size_t>(i)] = points.col(i).allFinite();
+    }
+    const FitState state = stateFromPoints(*model, info.camera(), points, present);
+    outcome->corrected = corrected;
+    retrackFrom(video, *model, settings, corrected, state, -1, outcome->rows,
+                recordFits(outcome->fits), progress, &cancel);
+  };
+}
+
+JobRunner::Job exportOverlayJob(std::filesystem::path video, std::filesystem::path out,
+                                std::shared_ptr<const ClmModel> model, std::vector<TrackRow> shown,
+                                std::vector<std::optional<FrameFit>> fits, bool patches) {
+  return [video = std::move(video), out = std::move(out), model = std::move(model),
+          shown = std::move(shown), fits = std::move(fits),
+          patches](const ProgressCallback& progress, CancelToken& cancel) {
+    VideoReader reader(video);
+    const Scheme scheme = model->scheme();
+    VideoInfo info;
+    info.width = reader.width();
+    info.height = reader.height();
+    Fitter fitter(*model, info.camera(), overlaySearchSettings());
+    VideoWriter writer(out, reader.width(), reader.height(), reader.fps());
+    FitOverlayOptions options;
+    options.patches = patches;
+    const int total = reader.frameCount();
+    cv::Mat frame;
+    while (reader.read(frame)) {
+      cancel.throwIfCancelled();
+      const auto index = static_cast<std::size_t>(reader.frameIndex());
+      if (index < shown.size() && shown[index].points.cols() > 0) {
+        const std::optional<FrameFit> fit = index < fits.size() ? fits[index] : std::nullopt;
+        drawReviewOverlay(frame, shown[index], fit, fitter, scheme, options, true);
+      }
+      writer.write(frame);
+      if (total > 0) progress(std::min(1.0, (reader.frameIndex() + 1.0) / total), "exporting");
+    }
+    writer.close();
+  };
+}
+
+}  // namespace clm3d::ui

@@ -1,0 +1,47 @@
+// The page's long operations as JobRunner jobs, each working on copies of what it needs and
+// filling an outcome the page takes over on the GUI thread when the job has ended: tracking the
+// whole video (loading the model first if needed), re-tracking forward from a corrected frame, and
+// writing the overlay video. A cancelled track or re-track keeps the frames done so far.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/track/tracker.hpp"
+#include "ui/common/job_runner.hpp"
+#include "ui/track/track_session.hpp"
+
+namespace clm3d::ui {
+
+struct TrackOutcome {
+  std::shared_ptr<const ClmModel> model;  // loaded by the job when none was given
+  TrackTable table;
+  std::vector<std::optional<FrameFit>> fits;  // per frame of table.rows
+  TrackSummary summary;
+};
+
+// Tracks every frame of `video`; `model` may be null, then the job loads `modelPath`.
+JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path modelPath,
+                        std::shared_ptr<const ClmModel> model, TrackerSettings settings,
+                        std::shared_ptr<TrackOutcome> outcome);
+
+struct RetrackOutcome {
+  int corrected = 0;
+  std::vector<TrackRow> rows;  // frames corrected+1 onwards
+  std::vector<std::optional<FrameFit>> fits;
+};
+
+// Starts from the state that best reproduces `points` (the corrected frame's, NaN = missing).
+JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const ClmModel> model,
+                          TrackerSettings settings, int corrected, Eigen::Matrix2Xd points,
+                          std::shared_ptr<RetrackOutcome> outcome);
+
+// Writes `out` (.mp4/.avi/.mkv) with every frame drawn by drawReviewOverlay: `shown` is the row to
+// draw per frame (the ground truth), `fits` the stored fit states.
+JobRunner::Job exportOverlayJob(std::filesystem::path video, std::filesystem::path out,
+                                std::shared_ptr<const ClmModel> model, std::vector<TrackRow> shown,
+                                std::vector<std::optional<FrameFit>> fits, bool patches);
+
+}  // namespace clm3d::ui

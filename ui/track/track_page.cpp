@@ -1,0 +1,711 @@
+#include "ui/track/track_page.hpp"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QShortcut>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <chrono>
+#include <cmath>
+
+#include "core/common/error.hpp"
+#include "core/fit/fitter.hpp"
+#include "core/project/autosave.hpp"
+#include "core/project/project.hpp"
+#include "core/track/ground_truth.hpp"
+#include "core/track/track_table.hpp"
+#include "ui/common/error_dialog.hpp"
+#include "ui/common/job_runner.hpp"
+#include "ui/common/mat_image.hpp"
+#include "ui/track/frame_source.hpp"
+#include "ui/track/frame_view.hpp"
+#include "ui/track/player_bar.hpp"
+#include "ui/track/review_overlay.hpp"
+#include "ui/track/timeline_widget.hpp"
+#include "ui/track/track_jobs.hpp"
+#include "ui/track/truth_commands.hpp"
+
+namespace clm3d::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kAutosaveMs = 5000;
+
+QString qPath(const fs::path& path) {
+  return QString::fromStdString(path.string());
+}
+
+fs::path fsPath(const QString& path) {
+  return fs::path(path.toStdString());
+}
+
+}  // namespace
+
+TrackPage::TrackPage(QWidget* parent)
+    : Page(parent), frames_(std::make_unique<FrameSource>()), runner_(new JobRunner(this)) {
+  buildLayout();
+  connectShortcuts();
+  connect(runner_, &JobRunner::progressed, this, [this](double fraction, const QString& stage) {
+    progress_->setValue(static_cast<int>(std::lround(fraction * 1000)));
+    progress_->setFormat(stage + " %p%");
+  });
+  connect(runner_, &JobRunner::failed, this, [this](const QString& message) {
+    const QString what = job_ == Job::Export    ? tr("Exporting the overlay video failed")
+                         : job_ == Job::Retrack ? tr("Re-tracking failed")
+                                                : tr("Tracking failed");
+    showError(this, what, message);
+  });
+  connect(runner_, &JobRunner::cancelled, this,
+          [this] { emit statusMessage(tr("Cancelled; the frames done so far are kept.")); });
+  connect(runner_, &JobRunner::ended, this, &TrackPage::onJobEnded);
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateControls(); });
+  autosaveTimer_ = new QTimer(this);
+  autosaveTimer_->setInterval(kAutosaveMs);
+  connect(autosaveTimer_, &QTimer::timeout, this, &TrackPage::autosave);
+  autosaveTimer_->start();
+  updateControls();
+}
+
+TrackPage::~TrackPage() {
+  runner_->cancel();
+  runner_->wait();
+}
+
+void TrackPage::buildLayout() {
+  auto* top = new QHBoxLayout;
+  videoCombo_ = new QComboBox(this);
+  videoCombo_->setObjectName("videoCombo");
+  videoCombo_->setMinimumContentsLength(18);
+  videoCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  auto* openVideoButton = new QPushButton(tr("Open…"), this);
+  openVideoButton->setObjectName("openVideoButton");
+  modelCombo_ = new QComboBox(this);
+  modelCombo_->setObjectName("modelCombo");
+  modelCombo_->setMinimumContentsLength(18);
+  modelCombo_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  auto* openModelButton = new QPushButton(tr("Open…"), this);
+  openModelButton->setObjectName("openModelButton");
+  trackButton_ = new QPushButton(tr("Track"), this);
+  trackButton_->setObjectName("trackButton");
+  trackButton_->setToolTip(tr("Track every frame of the video with the model (Ctrl+T)"));
+  cancelButton_ = new QPushButton(tr("Cancel"), this);
+  cancelButton_->setObjectName("cancelButton");
+  progress_ = new QProgressBar(this);
+  progress_->setObjectName("progressBar");
+  progress_->setRange(0, 1000);
+  progress_->setValue(0);
+  progress_->setTextVisible(true);
+  top->addWidget(new QLabel(tr("Video:"), this));
+  top->addWidget(videoCombo_, 1);
+  top->addWidget(openVideoButton);
+  top->addSpacing(8);
+  top->addWidget(new QLabel(tr("Model:"), this));
+  top->addWidget(modelCombo_, 1);
+  top->addWidget(openModelButton);
+  top->addSpacing(8);
+  top->addWidget(trackButton_);
+  top->addWidget(cancelButton_);
+  top->addWidget(progress_, 1);
+
+  frameView_ = new FrameView(this);
+  frameView_->setObjectName("frameView");
+
+  auto* side = new QVBoxLayout;
+  infoLabel_ = new QLabel(this);
+  infoLabel_->setObjectName("frameInfo");
+  infoLabel_->setWordWrap(true);
+  infoLabel_->setTextFormat(Qt::RichText);
+  infoLabel_->setMinimumWidth(220);
+  infoLabel_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  patchesCheck_ = new QCheckBox(tr("Show patches (P)"), this);
+  patchesCheck_->setObjectName("patchesCheck");
+  patchesCheck_->setChecked(patches_);
+  auto* review = new QGroupBox(tr("Frame"), this);
+  auto* reviewLayout = new QVBoxLayout(review);
+  reviewLayout->addWidget(infoLabel_);
+  reviewLayout->addWidget(patchesCheck_);
+
+  auto* truthBox = new QGroupBox(tr("Correction and ground truth"), this);
+  auto* truthLayout = new QVBoxLayout(truthBox);
+  keyframeButton_ = new QPushButton(tr("Mark keyframe (K)"), this);
+  keyframeButton_->setObjectName("keyframeButton");
+  interpolateButton_ = new QPushButton(tr("Interpolate keyframes"), this);
+  interpolateButton_->setObjectName("interpolateButton");
+  interpolateButton_->setToolTip(tr("Fill the frames between consecutive keyframes linearly"));
+  retrackButton_ = new QPushButton(tr("Re-track from here (R)"), this);
+  retrackButton_->setObjectName("retrackButton");
+  retrackButton_->setToolTip(
+      tr("Track the following frames again, starting from this frame's corrected points"));
+  auto* undoButton = new QPushButton(tr("Undo"), this);
+  undoButton->setObjectName("undoButton");
+  auto* redoButton = new QPushButton(tr("Redo"), this);
+  redoButton->setObjectName("redoButton");
+  auto* undoRow = new QHBoxLayout;
+  undoRow->addWidget(undoButton);
+  undoRow->addWidget(redoButton);
+  saveButton_ = new QPushButton(tr("Save ground truth (Ctrl+S)"), this);
+  saveButton_->setObjectName("saveTruthButton");
+  compareButton_ = new QPushButton(tr("Compare with ground truth…"), this);
+  compareButton_->setObjectName("compareButton");
+  compareButton_->setToolTip(tr("Load a ground-truth or tracks CSV to plot the error per frame"));
+  exportButton_ = new QPushButton(tr("Export overlay video…"), this);
+  exportButton_->setObjectName("exportButton");
+  truthLayout->addWidget(keyframeButton_);
+  truthLayout->addWidget(interpolateButton_);
+  truthLayout->addWidget(retrackButton_);
+  truthLayout->addLayout(undoRow);
+  truthLayout->addWidget(saveButton_);
+  truthLayout->addSpacing(8);
+  truthLayout->addWidget(compareButton_);
+  truthLayout->addWidget(exportButton_);
+  side->addWidget(review);
+  side->addWidget(truthBox);
+  side->addStretch(1);
+
+  auto* middle = new QHBoxLayout;
+  middle->addWidget(frameView_, 1);
+  middle->addLayout(side);
+
+  timeline_ = new TimelineWidget(this);
+  timeline_->setObjectName("timeline");
+  player_ = new PlayerBar(this);
+  player_->setObjectName("playerBar");
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addLayout(middle, 1);
+  layout->addWidget(timeline_);
+  layout->addWidget(player_);
+
+  connect(openVideoButton, &QPushButton::clicked, this, &TrackPage::chooseVideo);
+  connect(openModelButton, &QPushButton::clicked, this, &TrackPage::chooseModel);
+  connect(videoCombo_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    if (index >= 0) openVideo(fsPath(videoCombo_->itemData(index).toString()));
+  });
+  connect(modelCombo_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    if (index >= 0) openModel(fsPath(modelCombo_->itemData(index).toString()));
+  });
+  connect(trackButton_, &QPushButton::clicked, this, &TrackPage::startTracking);
+  connect(cancelButton_, &QPushButton::clicked, runner_, &JobRunner::cancel);
+  connect(patchesCheck_, &QCheckBox::toggled, this, &TrackPage::setPatchesShown);
+  connect(keyframeButton_, &QPushButton::clicked, this, &TrackPage::toggleKeyframe);
+  connect(interpolateButton_, &QPushButton::clicked, this, &TrackPage::interpolateKeyframes);
+  connect(retrackButton_, &QPushButton::clicked, this, &TrackPage::retrackFromCurrentFrame);
+  connect(undoButton, &QPushButton::clicked, &undo_, &QUndoStack::undo);
+  connect(redoButton, &QPushButton::clicked, &undo_, &QUndoStack::redo);
+  connect(&undo_, &QUndoStack::canUndoChanged, undoButton, &QPushButton::setEnabled);
+  connect(&undo_, &QUndoStack::canRedoChanged, redoButton, &QPushButton::setEnabled);
+  undoButton->setEnabled(false);
+  redoButton->setEnabled(false);
+  connect(saveButton_, &QPushButton::clicked, this, &TrackPage::save);
+  connect(compareButton_, &QPushButton::clicked, this, &TrackPage::chooseReference);
+  connect(exportButton_, &QPushButton::clicked, this, &TrackPage::chooseExport);
+  connect(timeline_, &TimelineWidget::frameRequested, this, &TrackPage::setCurrentFrame);
+  connect(player_, &PlayerBar::step, this,
+          [this](int delta) { setCurrentFrame(current_ + delta); });
+  connect(frameView_, &FrameView::landmarkMoved, this, [this](int index, QPointF, QPointF to) {
+    if (!session_.hasPoints(current_)) return;
+    undo_.push(moveLandmarkCommand(session_, current_, index, Eigen::Vector2d(to.x(), to.y()),
+                                   [this] { truthChanged(); }));
+  });
+}
+
+void TrackPage::connectShortcuts() {
+  const auto shortcut = [this](const QKeySequence& keys, auto&& action) {
+    auto* s = new QShortcut(keys, this);
+    s->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(s, &QShortcut::activated, this, std::forward<decltype(action)>(action));
+  };
+  shortcut(Qt::Key_Space, [this] { player_->togglePlaying(); });
+  shortcut(Qt::Key_Left, [this] { setCurrentFrame(current_ - 1); });
+  shortcut(Qt::Key_Right, [this] { setCurrentFrame(current_ + 1); });
+  shortcut(Qt::Key_Home, [this] { setCurrentFrame(0); });
+  shortcut(Qt::Key_End, [this] { setCurrentFrame(session_.video().frameCount - 1); });
+  shortcut(Qt::Key_K, [this] { toggleKeyframe(); });
+  shortcut(Qt::Key_P, [this] { patchesCheck_->toggle(); });
+  shortcut(Qt::Key_R, [this] { retrackFromCurrentFrame(); });
+  shortcut(QKeySequence::Undo, [this] { undo_.undo(); });
+  shortcut(QKeySequence::Redo, [this] { undo_.redo(); });
+  shortcut(QKeySequence::Save, [this] { save(); });
+  shortcut(QKeySequence(QStringLiteral("Ctrl+T")), [this] { startTracking(); });
+  shortcut(Qt::Key_Escape, [this] { runner_->cancel(); });
+}
+
+void TrackPage::setProject(Project* project) {
+  project_ = project;
+  fillProjectLists();
+  if (project_ && !project_->models.empty() && modelPath_.empty())
+    openModel(project_->models.front());
+}
+
+void TrackPage::fillProjectLists() {
+  const auto fill = [](QComboBox* combo, const std::vector<fs::path>& paths,
+                       const fs::path& current) {
+    combo->clear();
+    for (const fs::path& path : paths) {
+      combo->addItem(QString::fromStdString(path.filename().string()), qPath(path));
+    }
+    if (!current.empty() && combo->findData(qPath(current)) < 0) {
+      combo->addItem(QString::fromStdString(current.filename().string()), qPath(current));
+    }
+    combo->setCurrentIndex(current.empty() ? -1 : combo->findData(qPath(current)));
+  };
+  fill(videoCombo_, project_ ? project_->videos : std::vector<fs::path>{}, session_.video().path);
+  fill(modelCombo_, project_ ? project_->models : std::vector<fs::path>{}, modelPath_);
+}
+
+bool TrackPage::hasUnsavedChanges() const {
+  return !undo_.isClean();
+}
+
+bool TrackPage::isBusy() const {
+  return runner_->isRunning();
+}
+
+double TrackPage::longestDecodeMs() const {
+  return frames_->longestDecodeMs();
+}
+
+fs::path TrackPage::groundTruthCsv() const {
+  const fs::path& video = session_.video().path;
+  if (video.empty()) return {};
+  const std::string name = video.stem().string();
+  const fs::path base = project_ ? project_->folder : video.parent_path();
+  return base / "ground-truth" / name / (name + ".csv");
+}
+
+bool TrackPage::openVideo(const fs::path& video) {
+  if (runner_->isRunning()) return false;
+  if (hasUnsavedChanges() && session_.video().path != video) {
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved corrections"),
+        tr("Save the ground-truth corrections of %1 first?").arg(qPath(session_.video().path)),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !save())) return false;
+  }
+  player_->setPlaying(false);
+  const bool opened = runReportingErrors(this, tr("Opening the video failed"), [&] {
+    session_.openVideo(video);
+    frames_->open(video);
+  });
+  if (!opened) {
+    fillProjectLists();
+    return false;
+  }
+  undo_.clear();
+  autosavedIndex_ = -1;
+  tracksCsv_.clear();
+  current_ = 0;
+  if (project_ && project_->addUnique(project_->videos, video)) emit projectModified();
+  // A ground truth saved for this video before is opened for further correction.
+  const fs::path csv = groundTruthCsv();
+  if (hasRecoverableAutosave(csv)) {
+    offerRecovery();
+  } else if (fs::exists(csv)) {
+    runReportingErrors(this, tr("Opening the ground truth failed"),
+                       [&] { session_.setTruth(loadGroundTruth(csv)); });
+  }
+  resetOverlayFitter();
+  player_->setFps(session_.video().fps);
+  fillProjectLists();
+  refreshTimeline();
+  showFrame();
+  updateControls();
+  emit statusMessage(tr("%1: %2 frames, %3x%4, %5 fps")
+                         .arg(qPath(video.filename()))
+                         .arg(session_.video().frameCount)
+                         .arg(session_.video().width)
+                         .arg(session_.video().height)
+                         .arg(session_.video().fps, 0, 'f', 1));
+  return true;
+}
+
+void TrackPage::offerRecovery() {
+  const fs::path csv = groundTruthCsv();
+  const auto answer = QMessageBox::question(
+      this, tr("Recover corrections"),
+      tr("Unsaved ground-truth corrections of %1 were found (the studio closed before they were "
+         "saved). Recover them?")
+          .arg(qPath(session_.video().path.filename())),
+      QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+  if (answer != QMessageBox::Yes) {
+    discardAutosave(csv);
+    if (fs::exists(csv)) {
+      runReportingErrors(this, tr("Opening the ground truth failed"),
+                         [&] { session_.setTruth(loadGroundTruth(csv)); });
+    }
+    return;
+  }
+  runReportingErrors(this, tr("Recovering the corrections failed"), [&] {
+    GroundTruthSet recovered = loadGroundTruth(autosavePathFor(csv));
+    recovered.padTo(session_.video().frameCount);
+    const GroundTruthSet before = session_.truth();
+    // An undo step, so the recovered work counts as unsaved until the user saves it.
+    undo_.push(new TruthSetCommand(tr("Recover autosaved corrections"), session_, before,
+                                   std::move(recovered), [this] { truthChanged(); }));
+  });
+}
+
+void TrackPage::openModel(const fs::path& model) {
+  if (runner_->isRunning() || model == modelPath_) return;
+  modelPath_ = model;
+  // Loaded by the next track job, off the GUI thread.
+  session_.setModel(model, nullptr);
+  overlayFitter_.reset();
+  if (project_ && project_->addUnique(project_->models, model)) emit projectModified();
+  fillProjectLists();
+  updateControls();
+}
+
+void TrackPage::resetOverlayFitter() {
+  overlayFitter_.reset();
+  if (!session_.model() || !session_.hasVideo()) return;
+  runReportingErrors(this, tr("Preparing the patch overlay failed"), [&] {
+    overlayFitter_ = std::make_unique<Fitter>(*session_.model(), session_.video().camera(),
+                                              overlaySearchSettings());
+  });
+}
+
+bool TrackPage::startTracking() {
+  if (runner_->isRunning()) return false;
+  if (!session_.hasVideo() || modelPath_.empty()) {
+    showError(this, tr("Tracking needs a video and a model"),
+              tr("Open a video and a model (.clm3d) first."));
+    return false;
+  }
+  player_->setPlaying(false);
+  trackOutcome_ = std::make_shared<TrackOutcome>();
+  job_ = Job::Track;
+  runner_->start(tr("tracking"), trackJob(session_.video().path, modelPath_, session_.model(),
+                                          TrackerSettings{}, trackOutcome_));
+  updateControls();
+  return true;
+}
+
+bool TrackPage::retrackFromCurrentFrame() {
+  if (runner_->isRunning()) return false;
+  if (!session_.model() || !session_.hasPoints(current_)) {
+    showError(this, tr("Re-tracking needs a tracked frame"),
+              tr("Track the video first, then correct a frame and re-track from it."));
+    return false;
+  }
+  player_->setPlaying(false);
+  retrackOutcome_ = std::make_shared<RetrackOutcome>();
+  job_ = Job::Retrack;
+  runner_->start(tr("re-tracking"),
+                 retrackJob(session_.video().path, session_.model(), TrackerSettings{}, current_,
+                            session_.truth().table.rows[static_cast<std::size_t>(current_)].points,
+                            retrackOutcome_));
+  updateControls();
+  return true;
+}
+
+bool TrackPage::exportOverlay(const fs::path& out) {
+  if (runner_->isRunning()) return false;
+  if (!session_.model() || session_.track().rows.empty()) {
+    showError(this, tr("Nothing to export"), tr("Track the video first."));
+    return false;
+  }
+  std::vector<std::optional<FrameFit>> fits;
+  for (int f = 0; f < session_.video().frameCount; ++f) fits.push_back(session_.fit(f));
+  exportPath_ = out;
+  job_ = Job::Export;
+  runner_->start(tr("exporting"),
+                 exportOverlayJob(session_.video().path, out, session_.model(),
+                                  session_.truth().table.rows, std::move(fits), patches_));
+  updateControls();
+  return true;
+}
+
+void TrackPage::onJobEnded() {
+  const Job job = job_;
+  job_ = Job::None;
+  if (job == Job::Track && trackOutcome_) {
+    if (trackOutcome_->model) {
+      session_.setModel(modelPath_, trackOutcome_->model);
+    }
+    if (!trackOutcome_->table.rows.empty()) {
+      session_.setTrack(std::move(trackOutcome_->table), std::move(trackOutcome_->fits));
+      saveTracks();
+      emit statusMessage(tr("Tracked %1 of %2 frames (%3 succeeded).")
+                             .arg(session_.track().rows.size())
+                             .arg(session_.video().frameCount)
+                             .arg(trackOutcome_->summary.succeeded));
+    }
+    trackOutcome_.reset();
+    resetOverlayFitter();
+  } else if (job == Job::Retrack && retrackOutcome_) {
+    if (!retrackOutcome_->rows.empty()) {
+      const GroundTruthSet before = session_.truth();
+      const int corrected = retrackOutcome_->corrected;
+      session_.replaceTrackAfter(corrected, std::move(retrackOutcome_->rows),
+                                 std::move(retrackOutcome_->fits));
+      // The rows already changed; the command makes the ground-truth part undoable.
+      undo_.push(new TruthSetCommand(tr("Re-track from frame %1").arg(corrected), session_, before,
+                                     session_.truth(), [this] { truthChanged(); }));
+      saveTracks();
+    }
+    retrackOutcome_.reset();
+  } else if (job == Job::Export && runner_->elapsedSeconds() >= 0 && fs::exists(exportPath_)) {
+    emit statusMessage(tr("Overlay video written to %1").arg(qPath(exportPath_)));
+  }
+  progress_->setValue(0);
+  progress_->setFormat(QString());
+  refreshTimeline();
+  showFrame();
+  updateControls();
+}
+
+void TrackPage::saveTracks() {
+  if (!project_) return;
+  const fs::path path =
+      project_->folder / "tracks" /
+      (session_.video().path.stem().string() + "-" + modelPath_.stem().string() + ".csv");
+  runReportingErrors(this, tr("Saving the tracks failed"), [&] {
+    fs::create_directories(path.parent_path());
+    writeTrackTable(path, session_.track());
+    tracksCsv_ = path;
+    if (project_->addUnique(project_->tracks, path)) emit projectModified();
+  });
+}
+
+bool TrackPage::save() {
+  if (session_.truth().table.landmarkCount == 0) return true;
+  const fs::path csv = groundTruthCsv();
+  const bool saved = runReportingErrors(this, tr("Saving the ground truth failed"), [&] {
+    fs::create_directories(csv.parent_path());
+    saveGroundTruth(csv, session_.truth(), csv.parent_path());
+  });
+  if (!saved) return false;
+  discardAutosave(csv);
+  undo_.setClean();
+  if (project_ && project_->addUnique(project_->groundTruth, csv)) emit projectModified();
+  emit statusMessage(tr("Ground truth saved to %1 (%2 keyframes)")
+                         .arg(qPath(csv))
+                         .arg(session_.truth().keyframeCount()));
+  return true;
+}
+
+void TrackPage::autosave() {
+  if (undo_.isClean() || undo_.index() == autosavedIndex_ || !session_.hasVideo()) return;
+  const fs::path csv = groundTruthCsv();
+  try {
+    saveGroundTruth(autosavePathFor(csv), session_.truth());
+    autosavedIndex_ = undo_.index();
+  } catch (const std::exception& error) {
+    emit statusMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(error.what())));
+  }
+}
+
+bool TrackPage::compareWith(const fs::path& reference) {
+  return runReportingErrors(this, tr("Opening the ground truth failed"), [&] {
+    session_.setReference(readTrackTable(reference));
+    refreshTimeline();
+    showFrame();
+  });
+}
+
+void TrackPage::toggleKeyframe() {
+  if (runner_->isRunning() || !session_.hasPoints(current_)) return;
+  undo_.push(toggleKeyframeCommand(session_, current_, [this] { truthChanged(); }));
+}
+
+int TrackPage::interpolateKeyframes() {
+  if (runner_->isRunning()) return 0;
+  GroundTruthSet after = session_.truth();
+  const int filled = after.interpolateKeyframes();
+  if (filled == 0) {
+    emit statusMessage(tr("Interpolation needs two keyframes with frames between them."));
+    return 0;
+  }
+  undo_.push(new TruthSetCommand(tr("Interpolate %1 frames").arg(filled), session_,
+                                 session_.truth(), std::move(after), [this] { truthChanged(); }));
+  emit statusMessage(tr("Interpolated %1 frames between keyframes.").arg(filled));
+  return filled;
+}
+
+void TrackPage::setPatchesShown(bool shown) {
+  patches_ = shown;
+  if (patchesCheck_->isChecked() != shown) patchesCheck_->setChecked(shown);
+  showFrame();
+}
+
+void TrackPage::setCurrentFrame(int frame) {
+  const int count = session_.video().frameCount;
+  if (count <= 0) return;
+  const int clamped = std::clamp(frame, 0, count - 1);
+  if (clamped == current_ && frame != current_) {
+    player_->setPlaying(false);
+    return;
+  }
+  current_ = clamped;
+  showFrame();
+}
+
+void TrackPage::truthChanged() {
+  refreshTimeline();
+  showFrame();
+  updateControls();
+}
+
+void TrackPage::showFrame() {
+  const int count = session_.video().frameCount;
+  timeline_->setCurrentFrame(current_);
+  player_->setPosition(current_, count);
+  if (!session_.hasVideo()) {
+    frameView_->setImage({});
+    infoLabel_->setText(tr("No video open."));
+    return;
+  }
+  const cv::Mat& frame = frames_->frame(current_);
+  if (frame.empty()) {
+    frameView_->setImage({});
+    return;
+  }
+  const TrackRow* shown = session_.hasPoints(current_)
+                              ? &session_.truth().table.rows[static_cast<std::size_t>(current_)]
+                              : nullptr;
+  const std::optional<FrameFit>& fit = session_.fit(current_);
+  cv::Mat drawn = frame;
+  if (patches_ && shown && fit && overlayFitter_ && session_.scheme()) {
+    drawn = frame.clone();
+    const auto begin = std::chrono::steady_clock::now();
+    FitOverlayOptions options;
+    options.landmarks = false;
+    options.label = false;
+    try {
+      drawReviewOverlay(drawn, *shown, fit, *overlayFitter_, *session_.scheme(), options, false);
+    } catch (const std::exception&) {
+      drawn = frame;  // a frame the search cannot start on is shown without patches
+    }
+    longestOverlayMs_ =
+        std::max(longestOverlayMs_,
+                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                     .count());
+  }
+  frameView_->setImage(toQImage(drawn));
+
+  std::vector<QColor> colours;
+  Eigen::Matrix2Xd points;
+  if (shown) {
+    points = shown->points;
+    for (int i = 0; i < points.cols(); ++i) {
+      QColor colour(80, 230, 80);
+      if (const Scheme* scheme = session_.scheme(); scheme && i < scheme->size()) {
+        const int region = scheme->regionOf(i);
+        if (region >= 0) {
+          const RgbColour c = scheme->regions()[static_cast<std::size_t>(region)].colour;
+          colour = QColor(c.r, c.g, c.b);
+        }
+      }
+      colours.push_back(colour);
+    }
+  }
+  frameView_->setLandmarks(points, colours);
+
+  const bool keyframe = session_.truth().frameCount() > current_ &&
+                        session_.truth().keyframe[static_cast<std::size_t>(current_)];
+  const TrackRow* tracked = session_.trackRow(current_);
+  QString view = tr("not tracked");
+  QString confidence = QStringLiteral("–");
+  QString status;
+  if (tracked) {
+    if (session_.model() && tracked->view >= 0 &&
+        tracked->view < static_cast<int>(session_.model()->views.size())) {
+      const ViewModel& v = session_.model()->views[static_cast<std::size_t>(tracked->view)];
+      view = tr("pitch %1°, yaw %2°").arg(v.pitchDeg, 0, 'f', 0).arg(v.yawDeg, 0, 'f', 0);
+    } else {
+      view = tr("none");
+    }
+    confidence = QString::number(tracked->confidence, 'f', 2);
+    status = tracked->success ? tr("tracked") : tr("<span style='color:#c0392b'>failed</span>");
+  }
+  const double error = static_cast<std::size_t>(current_) < session_.errors().size()
+                           ? session_.errors()[static_cast<std::size_t>(current_)]
+                           : std::nan("");
+  QString text = tr("<b>Frame %1</b> of %2<br>View: %3<br>Confidence: %4 %5")
+                     .arg(current_)
+                     .arg(count)
+                     .arg(view, confidence, status);
+  if (std::isfinite(error)) text += tr("<br>Error vs ground truth: %1").arg(error, 0, 'f', 3);
+  if (keyframe) text += tr("<br><span style='color:#b8860b'><b>Keyframe</b></span>");
+  infoLabel_->setText(text);
+  frameView_->setLabel(tr("frame %1   view %2   confidence %3%4")
+                           .arg(current_)
+                           .arg(view, confidence, keyframe ? tr("   KEYFRAME") : QString()),
+                       keyframe);
+}
+
+void TrackPage::refreshTimeline() {
+  TimelineData timeline;
+  timeline.frameCount = session_.video().frameCount;
+  for (const TrackRow& row : session_.track().rows) {
+    timeline.confidence.push_back(row.confidence);
+    timeline.success.push_back(row.success);
+  }
+  timeline.keyframe = session_.truth().keyframe;
+  timeline.error = session_.errors();
+  timeline_->setData(std::move(timeline));
+}
+
+void TrackPage::updateControls() {
+  const bool busy = runner_->isRunning();
+  const bool tracked = session_.model() && !session_.track().rows.empty();
+  const bool points = session_.hasPoints(current_);
+  trackButton_->setEnabled(!busy && session_.hasVideo() && !modelPath_.empty());
+  cancelButton_->setEnabled(busy);
+  videoCombo_->setEnabled(!busy);
+  modelCombo_->setEnabled(!busy);
+  frameView_->setEditable(!busy);
+  keyframeButton_->setEnabled(!busy && points);
+  interpolateButton_->setEnabled(!busy && session_.truth().keyframeCount() >= 2);
+  retrackButton_->setEnabled(!busy && tracked && points);
+  saveButton_->setEnabled(!busy && session_.truth().table.landmarkCount > 0);
+  compareButton_->setEnabled(!busy && session_.hasVideo());
+  exportButton_->setEnabled(!busy && tracked);
+  const bool keyframe = session_.truth().frameCount() > current_ &&
+                        session_.truth().keyframe[static_cast<std::size_t>(current_)];
+  keyframeButton_->setText(keyframe ? tr("Clear keyframe (K)") : tr("Mark keyframe (K)"));
+}
+
+void TrackPage::chooseVideo() {
+  const QString start = project_ ? qPath(project_->folder) : QString();
+  const QString file = QFileDialog::getOpenFileName(
+      this, tr("Open a video"), start, tr("Videos (*.avi *.mp4 *.mkv *.mov);;All files (*)"));
+  if (!file.isEmpty()) openVideo(fsPath(file));
+}
+
+void TrackPage::chooseModel() {
+  const QString start = project_ ? qPath(project_->folder) : QString();
+  const QString file = QFileDialog::getOpenFileName(this, tr("Open a model"), start,
+                                                    tr("clm3d models (*.clm3d);;All files (*)"));
+  if (!file.isEmpty()) openModel(fsPath(file));
+}
+
+void TrackPage::chooseReference() {
+  const QString start = project_ ? qPath(project_->folder) : QString();
+  const QString file = QFileDialog::getOpenFileName(this, tr("Compare with ground truth"), start,
+                                                    tr("Tracks CSV (*.csv);;All files (*)"));
+  if (!file.isEmpty()) compareWith(fsPath(file));
+}
+
+void TrackPage::chooseExport() {
+  const fs::path video = session_.video().path;
+  const fs::path folder = project_ ? project_->folder / "tracks" : video.parent_path();
+  const QString file = QFileDialog::getSaveFileName(
+      this, tr("Export the overlay video"),
+      qPath(folder / (video.stem().string() + "-overlay.mp4")), tr("Videos (*.mp4 *.avi *.mkv)"));
+  if (!file.isEmpty()) exportOverlay(fsPath(file));
+}
+
+}  // namespace clm3d::ui
