@@ -1,0 +1,107 @@
+// clm3d-studio's start-up as the executable runs it (ui/shell/studio_launch.hpp): --screenshot
+// writes a PNG of the window with the project open, --help and a missing demo project are answered
+// without a window, and a bad project or page name fails with a message instead of a dialog
+// nobody can answer.
+#include "ui/shell/studio_launch.hpp"
+
+#include <QApplication>
+#include <QImage>
+#include <QSurfaceFormat>
+#include <QTest>
+
+#include "core/project/project.hpp"
+#include "tests/gui/project/isolated_settings.hpp"
+#include "ui/project/project_session.hpp"
+#include "ui/project/studio_settings.hpp"
+#if __has_include(<QVTKOpenGLNativeWidget.h>)
+#include <QVTKOpenGLNativeWidget.h>
+#endif
+
+namespace clm3d::ui {
+
+class StudioLaunchTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void screenshotModeWritesThePngOfTheOpenProject() {
+    test::TempFolder temp;
+    createProject(temp.path() / "shot", "Shot");
+    StudioOptions options;
+    options.project = toQString(temp.path() / "shot");
+    options.screenshot = toQString(temp.path() / "window.png");
+    QCOMPARE(runStudio(options), 0);
+    const QImage image(options.screenshot);
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), QSize(1280, 800));
+    QVERIFY(recentProjects().contains(toQString(temp.path() / "shot")));
+  }
+
+  void theDemoFolderOfClm3dDemoOpensWithItsPage() {
+    test::TempFolder temp;
+    createProject(temp.path() / "demo-out", "clm3d demo");
+    const QString shot = toQString(temp.path() / "demo.png");
+    const QString page = pageTitle();
+    QStringList arguments{"clm3d-studio", "--demo", toQString(temp.path() / "demo-out"),
+                          "--screenshot", shot};
+    if (!page.isEmpty()) arguments << "--page" << page;
+    QCOMPARE(runStudio(arguments), 0);
+    QVERIFY(!QImage(shot).isNull());
+  }
+
+  void aMissingDemoProjectSaysHowToMakeIt() {
+    test::TempFolder temp;
+    const QString dir = toQString(temp.path() / "nothing");
+    const QString message = missingDemoMessage(dir);
+    QVERIFY2(message.contains("clm3d demo --out " + dir), qPrintable(message));
+    QVERIFY(missingDemoMessage(toQString(createProject(temp.path() / "x").folder)).isEmpty());
+    const QStringList arguments{"clm3d-studio", "--demo", dir, "--screenshot",
+                                toQString(temp.path() / "never.png")};
+    QCOMPARE(answerWithoutWindow(arguments), std::optional<int>(1));
+    QCOMPARE(runStudio(arguments), 1);
+    QVERIFY(!std::filesystem::exists(temp.path() / "never.png"));
+  }
+
+  void helpAndBadArgumentsNeedNoWindow() {
+    QCOMPARE(answerWithoutWindow({"clm3d-studio", "--help"}), std::optional<int>(0));
+    QCOMPARE(answerWithoutWindow({"clm3d-studio", "project-folder"}), std::nullopt);
+    QCOMPARE(runStudio(QStringList{"clm3d-studio", "--no-such-option"}), 2);
+  }
+
+  void aBrokenProjectOrUnknownPageFailsInScreenshotMode() {
+    test::TempFolder temp;
+    StudioOptions options;
+    options.project = toQString(temp.path() / "missing");
+    options.screenshot = toQString(temp.path() / "bad.png");
+    QCOMPARE(runStudio(options), 1);
+    options.project.clear();
+    options.page = "no-such-page";
+    QCOMPARE(runStudio(options), 2);
+    QVERIFY(!std::filesystem::exists(temp.path() / "bad.png"));
+  }
+
+ private:
+  // The title of the last page built into this studio, or empty when it has none.
+  static QString pageTitle();
+
+  test::IsolatedSettings settings_;
+};
+
+}  // namespace clm3d::ui
+
+#include "ui/common/page.hpp"
+#include "ui/shell/main_window.hpp"
+
+QString clm3d::ui::StudioLaunchTest::pageTitle() {
+  MainWindow window;
+  return window.pages().isEmpty() ? QString() : window.pages().last()->title();
+}
+
+int main(int argc, char** argv) {
+#if __has_include(<QVTKOpenGLNativeWidget.h>)
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+#endif
+  QApplication app(argc, argv);
+  clm3d::ui::StudioLaunchTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "studio_launch_test.moc"
