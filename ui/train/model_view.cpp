@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QVBoxLayout>
 
@@ -45,15 +46,15 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), loader_(new JobRunner(t
       new QLabel(tr("<b>Shape modes</b> (mean shape; drag a slider to add "
                     "a mode, in standard deviations)")));
   shapeColumn->addWidget(shapes_, 1);
-  auto* split = new QSplitter(Qt::Horizontal);
-  split->addWidget(patchBox);
-  split->addWidget(shapeBox);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
+  split_ = new QSplitter(Qt::Vertical);
+  split_->addWidget(patchBox);
+  split_->addWidget(shapeBox);
+  split_->setStretchFactor(0, 0);  // a larger page gives the room to the shape view
+  split_->setStretchFactor(1, 1);
 
   auto* column = new QVBoxLayout(this);
   column->addLayout(top);
-  column->addWidget(split, 1);
+  column->addWidget(split_, 1);
 
   connect(choice_, qOverload<int>(&QComboBox::activated), this, [this](int index) {
     const QString file = choice_->itemData(index).toString();
@@ -113,6 +114,12 @@ void ModelView::showModel(std::shared_ptr<const ClmModel> model,
   }
   model_ = std::move(model);
   file_ = file;
+  // The whole grid if it fits in 60 % of the height, the rest for the shape explorer.
+  const int total = split_->height();
+  const int wanted = patches_->widget()->sizeHint().height() + 2 * patches_->frameWidth() +
+                     patches_->horizontalScrollBar()->sizeHint().height() + 30;
+  const int top = std::min(wanted, total * 3 / 5);
+  split_->setSizes({top, std::max(0, total - top)});
   summary_->setText(QString::fromStdString(file.filename().string()) + ": " +
                     modelSummary(*model_).section('\n', 0, 0));
   summary_->setToolTip(modelSummary(*model_));

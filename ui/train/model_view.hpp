@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QLabel;
+class QSplitter;
 
 namespace clm3d::ui {
 
@@ -48,6 +49,7 @@ class ModelView : public QWidget {
 
   QComboBox* choice_;
   QLabel* summary_;
+  QSplitter* split_;
   MeanPatchGrid* patches_;
   ShapeModeExplorer* shapes_;
   JobRunner* loader_;

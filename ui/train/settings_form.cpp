@@ -4,6 +4,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLineEdit>
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
@@ -85,8 +86,13 @@ QString formatAngleList(const std::vector<double>& values) {
 }
 
 SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
-  auto* column = new QVBoxLayout(this);
-  column->setContentsMargins(0, 0, 0, 0);
+  // Two columns: views and patches, then the PCA, perturbations and run settings.
+  auto* columns = new QHBoxLayout(this);
+  columns->setContentsMargins(0, 0, 0, 0);
+  auto* column = new QVBoxLayout;
+  auto* secondColumn = new QVBoxLayout;
+  columns->addLayout(column);
+  columns->addLayout(secondColumn);
 
   QFormLayout* views = addGroup(column, tr("Views"));
   yaws_ = textField("viewYaws",
@@ -136,7 +142,8 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   addRow(patches, tr("Hidden share"), hiddenShare_);
   addRow(patches, tr("Supersampling"), supersample_);
 
-  QFormLayout* pca = addGroup(column, tr("Variance kept"));
+  column->addStretch(1);
+  QFormLayout* pca = addGroup(secondColumn, tr("Variance kept"));
   textureVariance_ = realField(
       "textureVariance", 0.01, 1.0, 0.01, 3,
       tr("Share of the variance each view/scale patch PCA keeps (0.01-1); higher keeps more "
@@ -161,7 +168,7 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   addRow(pca, tr("Shape limit (SD)"), shapeLimit_);
   pca->addRow(mirrorShapes_);
 
-  QFormLayout* jitter = addGroup(column, tr("Perturbations (uniform +-range per render)"));
+  QFormLayout* jitter = addGroup(secondColumn, tr("Perturbations (+-range)"));
   rotation_ = realField("rotationJitter", 0, 20, 0.5, 1,
                         tr("Pitch, yaw and roll jitter of each render around its view centre, in "
                            "degrees (0-20)."));
@@ -182,7 +189,7 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   addRow(jitter, tr("Ambient"), ambient_);
   addRow(jitter, tr("Diffuse"), diffuse_);
 
-  QFormLayout* run = addGroup(column, tr("Run"));
+  QFormLayout* run = addGroup(secondColumn, tr("Run"));
   seed_ = textField("seed", tr("Random seed of the perturbations and shape samples: the same "
                                "seed and data give the same model."));
   seed_->setValidator(new QRegularExpressionValidator(QRegularExpression("[0-9]{1,19}"), seed_));
@@ -191,7 +198,7 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
                          "model does not depend on it."));
   addRow(run, tr("Seed"), seed_);
   addRow(run, tr("Threads"), threads_);
-  column->addStretch(1);
+  secondColumn->addStretch(1);
 
   connect(singleView_, &QCheckBox::toggled, this, [this](bool single) {
     yaws_->setEnabled(!single);

@@ -2,6 +2,8 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 
 #include <QHBoxLayout>
@@ -9,6 +11,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -25,6 +28,8 @@ ShapeModeExplorer::ShapeModeExplorer(QWidget* parent)
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   view_->setRenderWindow(window);
   window->AddRenderer(scene_->renderer());
+  vtkNew<vtkInteractorStyleTrackballCamera> turn;  // drag turns the shape, wheel zooms
+  view_->interactor()->SetInteractorStyle(turn);
 
   summary_ = new QLabel;
   summary_->setWordWrap(true);
@@ -102,6 +107,7 @@ void ShapeModeExplorer::setShapeModel(const ShapeModel& shape, const Scheme& sch
       shape.meanShape.rowwise().maxCoeff() - shape.meanShape.rowwise().minCoeff();
   const double radius = std::max(0.5, extent.maxCoeff() / 40.0);
   scene_->build(shape.meanShape, scheme, radius);
+  cameraPending_ = true;
   reset_->setEnabled(count > 0);
   updateShape();
 }
@@ -121,6 +127,7 @@ Eigen::Matrix3Xd ShapeModeExplorer::displayedPoints() const {
 }
 
 void ShapeModeExplorer::reset() {
+  cameraPending_ = true;
   for (QSlider* slider : sliders_) {
     const QSignalBlocker block(slider);
     slider->setValue(0);
@@ -139,7 +146,21 @@ void ShapeModeExplorer::updateShape() {
 }
 
 void ShapeModeExplorer::render() {
-  if (view_->isVisible()) view_->renderWindow()->Render();
+  if (!view_->isVisible() || view_->width() <= 0 || view_->height() <= 0) return;
+  if (cameraPending_) {
+    // The camera fits the shape to the view's aspect, which is only known once it is shown.
+    const qreal ratio = view_->devicePixelRatioF();
+    view_->renderWindow()->SetSize(static_cast<int>(view_->width() * ratio),
+                                   static_cast<int>(view_->height() * ratio));
+    scene_->resetCamera();
+    cameraPending_ = false;
+  }
+  view_->renderWindow()->Render();
+}
+
+void ShapeModeExplorer::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  QTimer::singleShot(0, this, &ShapeModeExplorer::render);
 }
 
 }  // namespace clm3d::ui

@@ -1,7 +1,7 @@
 // The 3D shape-mode explorer: the shape model's mean landmarks in a VTK view (spheres coloured by
 // region, region lines) and a slider per shape mode (the first ten, each -3..+3 standard
 // deviations of b_s) that moves the points live, so a person can see what each mode does; Reset
-// returns to the mean shape.
+// returns to the mean shape and the first view.
 #pragma once
 
 #include <Eigen/Core>
@@ -47,6 +47,7 @@ class ShapeModeExplorer : public QWidget {
   void reset();
 
  private:
+  void showEvent(QShowEvent* event) override;
   void updateShape();
   void render();
 
@@ -59,6 +60,7 @@ class ShapeModeExplorer : public QWidget {
   std::vector<QWidget*> rows_;
   std::unique_ptr<ShapeScene> scene_;
   ShapeModel shape_;
+  bool cameraPending_ = false;  // fit the camera to the shape at the next render
 };
 
 }  // namespace clm3d::ui

@@ -5,7 +5,6 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkGlyph3D.h>
-#include <vtkIdList.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -14,6 +13,8 @@
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
+
+#include <limits>
 
 namespace clm3d::ui {
 namespace {
@@ -32,6 +33,37 @@ void insertColour(vtkUnsignedCharArray* colours, const RgbColour& c) {
 }
 
 }  // namespace
+
+std::vector<std::pair<int, int>> spanningTree(const Eigen::Matrix3Xd& points,
+                                              const std::vector<int>& indices) {
+  std::vector<int> members;
+  for (int index : indices) {
+    if (index >= 0 && index < points.cols()) members.push_back(index);
+  }
+  std::vector<std::pair<int, int>> edges;
+  if (members.size() < 2) return edges;
+  // Prim's algorithm: grow the tree from the first member by the shortest edge leaving it.
+  std::vector<bool> inTree(members.size(), false);
+  inTree[0] = true;
+  for (std::size_t added = 1; added < members.size(); ++added) {
+    double best = std::numeric_limits<double>::infinity();
+    std::pair<std::size_t, std::size_t> edge{0, 0};
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      if (!inTree[i]) continue;
+      for (std::size_t j = 0; j < members.size(); ++j) {
+        if (inTree[j]) continue;
+        const double d = (points.col(members[i]) - points.col(members[j])).squaredNorm();
+        if (d < best) {
+          best = d;
+          edge = {i, j};
+        }
+      }
+    }
+    inTree[edge.second] = true;
+    edges.emplace_back(members[edge.first], members[edge.second]);
+  }
+  return edges;
+}
 
 ShapeScene::ShapeScene() {
   renderer_->SetBackground(0.13, 0.14, 0.16);
@@ -70,17 +102,15 @@ void ShapeScene::build(const Eigen::Matrix3Xd& points, const Scheme& scheme, dou
   landmarks_->GetPointData()->SetScalars(pointColours);
 
   auto lineColours = colourArray("region colour");
-  vtkNew<vtkCellArray> polylines;
+  vtkNew<vtkCellArray> segments;
   for (const LandmarkRegion& region : scheme.regions()) {
-    vtkNew<vtkIdList> ids;
-    for (int index : region.indices) {
-      if (index < n) ids->InsertNextId(index);
+    for (const auto& [a, b] : spanningTree(points, region.indices)) {
+      const vtkIdType ends[2] = {a, b};
+      segments->InsertNextCell(2, ends);
+      insertColour(lineColours, region.colour);
     }
-    if (ids->GetNumberOfIds() < 2) continue;
-    polylines->InsertNextCell(ids);
-    insertColour(lineColours, region.colour);
   }
-  lines_->SetLines(polylines);
+  lines_->SetLines(segments);
   lines_->GetCellData()->SetScalars(lineColours);
 
   vtkNew<vtkSphereSource> sphere;
@@ -97,7 +127,6 @@ void ShapeScene::build(const Eigen::Matrix3Xd& points, const Scheme& scheme, dou
   sphereMapper->SetColorModeToDirectScalars();
   sphereMapper->SetScalarModeToUsePointData();
   sphereActor_->SetMapper(sphereMapper);
-  resetCamera();
 }
 
 void ShapeScene::update(const Eigen::Matrix3Xd& points) {
@@ -125,10 +154,11 @@ void ShapeScene::resetCamera() {
   camera->SetPosition(0, 0, 1);
   camera->SetViewUp(0, 1, 0);
   renderer_->ResetCamera();
-  camera->Azimuth(25);
+  camera->Azimuth(15);
   camera->Elevation(10);
   camera->OrthogonalizeViewUp();
   renderer_->ResetCamera();
+  camera->Zoom(1.25);  // ResetCamera fits the bounding sphere, which leaves wide margins
   renderer_->ResetCameraClippingRange();
 }
 

@@ -1,12 +1,15 @@
 // The VTK scene of the shape-mode explorer: a landmark set as spheres coloured by the scheme's
-// regions, with lines joining each region's landmarks in the scheme's order. The points can be
-// moved in place (update) so a slider drag only changes coordinates, not the pipeline.
+// regions, with lines joining each region's landmarks (the region's shortest spanning tree on the
+// shape the scene is built for, so an eye or the jaw reads as one connected outline). The points
+// can be moved in place (update) so a slider drag only changes coordinates, not the pipeline.
 #pragma once
 
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
 #include <Eigen/Core>
+#include <utility>
+#include <vector>
 
 #include "core/scheme/scheme.hpp"
 
@@ -16,6 +19,11 @@ class vtkPolyData;
 class vtkRenderer;
 
 namespace clm3d::ui {
+
+// The edges (landmark index pairs) of the minimum spanning tree of `indices` by 3D distance
+// between their points; indices outside the points are skipped.
+std::vector<std::pair<int, int>> spanningTree(const Eigen::Matrix3Xd& points,
+                                              const std::vector<int>& indices);
 
 class ShapeScene {
  public:

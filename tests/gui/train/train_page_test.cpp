@@ -56,14 +56,15 @@ Project makeProject(const fs::path& folder, const std::string& seeds, int textur
   return project;
 }
 
-// Two views, one scale (two for `scales`), small patches, every landmark kept in every view.
+// Two views, one scale (two for `scales`), small patches, every landmark kept in every view:
+// a run of a few seconds on four heads.
 TrainSettings tinySettings(int scales = 1) {
   TrainSettings s;
   s.yawsDeg = {-30, 0};
   s.pitchesDeg = {0};
   s.scales = scales;
   s.patchSize = 10;
-  s.samplesPerView = 2;
+  s.samplesPerView = 3;
   s.hiddenShare = 1.0;
   s.supersample = 1;
   s.threads = 2;
@@ -136,7 +137,7 @@ class TrainPageTest : public QObject {
 
   void trainRunsInTheBackgroundAndShowsTheModel() {
     test::TempFolder folder;
-    Project project = makeProject(folder.path(), "1-3");
+    Project project = makeProject(folder.path(), "1-4", 512);
     TrainPage page;
     page.setProject(&project);
     page.settingsForm()->setSettings(tinySettings(2));
@@ -352,7 +353,7 @@ class TrainPageTest : public QObject {
     page.tabs()->setCurrentWidget(page.modelView());
     ShapeModeExplorer* shapes = page.modelView()->shapes();
     QVERIFY(QTest::qWaitForWindowExposed(shapes->view()));
-    shapes->slider(0)->setValue(200);
+    shapes->slider(0)->setValue(150);
     QTest::qWait(500);
     QVERIFY(page.grab().save(folderName + "/studio-train-model.png"));
   }
