@@ -42,6 +42,7 @@ class TimelineWidget : public QWidget {
 
  private:
   QRectF plotRect() const;
+  double errorScale() const;  // the error at the top of the plot
 
   TimelineData data_;
   int current_ = 0;

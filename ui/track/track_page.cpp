@@ -53,6 +53,7 @@ fs::path fsPath(const QString& path) {
 
 TrackPage::TrackPage(QWidget* parent)
     : Page(parent), frames_(std::make_unique<FrameSource>()), runner_(new JobRunner(this)) {
+  setFocusPolicy(Qt::StrongFocus);  // the page's shortcuts need the focus inside it
   buildLayout();
   connectShortcuts();
   connect(runner_, &JobRunner::progressed, this, [this](double fraction, const QString& stage) {
@@ -269,7 +270,8 @@ bool TrackPage::hasUnsavedChanges() const {
 }
 
 bool TrackPage::isBusy() const {
-  return runner_->isRunning();
+  // Until onJobEnded has taken the outcome over, not only while the worker runs.
+  return job_ != Job::None || runner_->isRunning();
 }
 
 double TrackPage::longestDecodeMs() const {
@@ -285,7 +287,7 @@ fs::path TrackPage::groundTruthCsv() const {
 }
 
 bool TrackPage::openVideo(const fs::path& video) {
-  if (runner_->isRunning()) return false;
+  if (isBusy()) return false;
   if (hasUnsavedChanges() && session_.video().path != video) {
     const auto answer = QMessageBox::question(
         this, tr("Unsaved corrections"),
@@ -357,7 +359,7 @@ void TrackPage::offerRecovery() {
 }
 
 void TrackPage::openModel(const fs::path& model) {
-  if (runner_->isRunning() || model == modelPath_) return;
+  if (isBusy() || model == modelPath_) return;
   modelPath_ = model;
   // Loaded by the next track job, off the GUI thread.
   session_.setModel(model, nullptr);
@@ -377,7 +379,7 @@ void TrackPage::resetOverlayFitter() {
 }
 
 bool TrackPage::startTracking() {
-  if (runner_->isRunning()) return false;
+  if (isBusy()) return false;
   if (!session_.hasVideo() || modelPath_.empty()) {
     showError(this, tr("Tracking needs a video and a model"),
               tr("Open a video and a model (.clm3d) first."));
@@ -393,7 +395,7 @@ bool TrackPage::startTracking() {
 }
 
 bool TrackPage::retrackFromCurrentFrame() {
-  if (runner_->isRunning()) return false;
+  if (isBusy()) return false;
   if (!session_.model() || !session_.hasPoints(current_)) {
     showError(this, tr("Re-tracking needs a tracked frame"),
               tr("Track the video first, then correct a frame and re-track from it."));
@@ -411,7 +413,7 @@ bool TrackPage::retrackFromCurrentFrame() {
 }
 
 bool TrackPage::exportOverlay(const fs::path& out) {
-  if (runner_->isRunning()) return false;
+  if (isBusy()) return false;
   if (!session_.model() || session_.track().rows.empty()) {
     showError(this, tr("Nothing to export"), tr("Track the video first."));
     return false;
@@ -496,14 +498,16 @@ bool TrackPage::save() {
   return true;
 }
 
-void TrackPage::autosave() {
-  if (undo_.isClean() || undo_.index() == autosavedIndex_ || !session_.hasVideo()) return;
+bool TrackPage::autosave() {
+  if (undo_.isClean() || undo_.index() == autosavedIndex_ || !session_.hasVideo()) return false;
   const fs::path csv = groundTruthCsv();
   try {
     saveGroundTruth(autosavePathFor(csv), session_.truth());
     autosavedIndex_ = undo_.index();
+    return true;
   } catch (const std::exception& error) {
     emit statusMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(error.what())));
+    return false;
   }
 }
 
@@ -516,12 +520,12 @@ bool TrackPage::compareWith(const fs::path& reference) {
 }
 
 void TrackPage::toggleKeyframe() {
-  if (runner_->isRunning() || !session_.hasPoints(current_)) return;
+  if (isBusy() || !session_.hasPoints(current_)) return;
   undo_.push(toggleKeyframeCommand(session_, current_, [this] { truthChanged(); }));
 }
 
 int TrackPage::interpolateKeyframes() {
-  if (runner_->isRunning()) return 0;
+  if (isBusy()) return 0;
   GroundTruthSet after = session_.truth();
   const int filled = after.interpolateKeyframes();
   if (filled == 0) {
@@ -628,7 +632,7 @@ void TrackPage::showFrame() {
       view = tr("none");
     }
     confidence = QString::number(tracked->confidence, 'f', 2);
-    status = tracked->success ? tr("tracked") : tr("<span style='color:#c0392b'>failed</span>");
+    status = tracked->success ? tr("(tracked)") : tr("<span style='color:#c0392b'>(failed)</span>");
   }
   const double error = static_cast<std::size_t>(current_) < session_.errors().size()
                            ? session_.errors()[static_cast<std::size_t>(current_)]
@@ -659,7 +663,7 @@ void TrackPage::refreshTimeline() {
 }
 
 void TrackPage::updateControls() {
-  const bool busy = runner_->isRunning();
+  const bool busy = isBusy();
   const bool tracked = session_.model() && !session_.track().rows.empty();
   const bool points = session_.hasPoints(current_);
   trackButton_->setEnabled(!busy && session_.hasVideo() && !modelPath_.empty());

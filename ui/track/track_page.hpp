@@ -58,6 +58,9 @@ class TrackPage : public Page {
   int interpolateKeyframes();
   void setCurrentFrame(int frame);
   void setPatchesShown(bool shown);
+  // Writes unsaved corrections to the autosave beside groundTruthCsv() (the page's timer calls it
+  // every 5 s); false when there was nothing new to write or it failed.
+  bool autosave();
 
   int currentFrame() const { return current_; }
   const TrackSession& session() const { return session_; }
@@ -86,7 +89,6 @@ class TrackPage : public Page {
   void updateControls();
   void onJobEnded();
   void saveTracks();
-  void autosave();
   void offerRecovery();
   void resetOverlayFitter();
   void chooseVideo();
