@@ -47,7 +47,7 @@ MainWindow::MainWindow(PageSet pages, QWidget* parent) : QMainWindow(parent) {
   pageList_ = new QListWidget;
   pageList_->setObjectName(QStringLiteral("pageList"));
   pageList_->setSelectionMode(QAbstractItemView::SingleSelection);
-  pageList_->setMaximumWidth(200);
+  pageList_->setStyleSheet(QStringLiteral("QListWidget::item { padding: 6px 10px; }"));
   stack_ = new QStackedWidget;
   stack_->setObjectName(QStringLiteral("pageStack"));
   auto* empty = new QLabel(tr("This clm3d-studio was built without pages."));
@@ -59,6 +59,8 @@ MainWindow::MainWindow(PageSet pages, QWidget* parent) : QMainWindow(parent) {
   splitter->addWidget(pageList_);
   splitter->addWidget(stack_);
   splitter->setStretchFactor(1, 1);
+  splitter->setCollapsible(0, false);
+  splitter->setSizes({160, 1120});
   setCentralWidget(splitter);
   statusBar()->showMessage(tr("Open a project (File > Open Project) or create one."));
 
