@@ -207,7 +207,9 @@ void MainWindow::buildMenus() {
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
   fillRecentMenu();
   file->addSeparator();
-  file->addAction(tr("&Save"), this, &MainWindow::saveAll, QKeySequence::Save);
+  // Not Ctrl+S: the pages use it for their own Save, and two window-wide Ctrl+S would cancel out.
+  file->addAction(tr("&Save All"), this, &MainWindow::saveAll,
+                  QKeySequence(QStringLiteral("Ctrl+Shift+S")));
   file->addAction(tr("&Close Project"), this, &MainWindow::closeProject,
                   QKeySequence(QStringLiteral("Ctrl+Shift+W")));
   file->addSeparator();
@@ -306,8 +308,7 @@ void MainWindow::showShortcuts() {
   };
   row(QKeySequence(QKeySequence::New).toString(QKeySequence::NativeText), tr("New project"));
   row(QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText), tr("Open project"));
-  row(QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText),
-      tr("Save every page's changes"));
+  row(QStringLiteral("Ctrl+Shift+S"), tr("Save every page's changes"));
   row(QStringLiteral("Ctrl+Shift+W"), tr("Close project"));
   row(QKeySequence(QKeySequence::Quit).toString(QKeySequence::NativeText), tr("Quit"));
   for (int i = 0; i < pages_.size() && i < 9; ++i) {
