@@ -9,6 +9,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
@@ -231,8 +232,12 @@ class TrainPageTest : public QObject {
     QSignalSpy ended(page.runPanel(), &TrainRunPanel::ended);
     QTest::mouseClick(page.findChild<QPushButton*>("trainButton"), Qt::LeftButton);
     QVERIFY(test::waitUntil([&] { return page.runPanel()->progressBar()->value() > 0; }, 30000));
+    QElapsedTimer sinceCancel;
+    sinceCancel.start();
     QTest::mouseClick(page.findChild<QPushButton*>("cancelButton"), Qt::LeftButton);
     QVERIFY(test::waitUntil([&] { return ended.count() == 1; }, 30000));
+    qInfo("cancelled at %d %%, %lld ms after Cancel", page.runPanel()->progressBar()->value(),
+          sinceCancel.elapsed());
     QCOMPARE(cancelled.count(), 1);
     QVERIFY(!fs::exists(folder.path() / "models" / "cancelled.clm3d"));
     QVERIFY(project.models.empty());
