@@ -128,6 +128,12 @@ void addTrainCommand(CLI::App& root) {
   command->add_option("--samples", args->samples, "Perturbed renders per subject and view")
       ->check(CLI::Range(1, 100));
   command
+      ->add_option("--view-coverage", args->settings.perturbation.viewCoverage,
+                   "Share of half the spacing of the view centres that the pitch/yaw jitter of "
+                   "each view's renders covers (0 = +-5 degrees only)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.5));
+  command
       ->add_option("--texture-variance", args->settings.textureVariance,
                    "Variance kept by each patch PCA")
       ->check(CLI::Range(0.01, 1.0));

@@ -43,6 +43,7 @@ void TrainSettings::validate() const {
   require(threads >= 0 && threads <= 64, "threads must be 0..64");
   const PerturbationSettings& p = perturbation;
   require(p.rotationDeg >= 0 && p.rotationDeg <= 20, "rotation jitter must be 0..20 degrees");
+  require(p.viewCoverage >= 0 && p.viewCoverage <= 1.5, "view coverage must be 0..1.5");
   require(p.scale >= 0 && p.scale <= 0.3, "scale jitter must be 0..0.3");
   require(p.shiftPixels >= 0 && p.shiftPixels <= 4, "shift jitter must be 0..4 pixels");
   require(p.lightDirection >= 0 && p.lightDirection <= 1, "light jitter must be 0..1");
@@ -78,10 +79,13 @@ std::string TrainSettings::toJson() const {
   j["patch_size"] = patchSize;
   j["patch_ratio"] = patchRatio;
   j["samples_per_view"] = samplesPerView;
-  j["perturbation"] = {
-      {"rotation_deg", perturbation.rotationDeg}, {"scale", perturbation.scale},
-      {"shift_pixels", perturbation.shiftPixels}, {"light_direction", perturbation.lightDirection},
-      {"ambient", perturbation.ambient},          {"diffuse", perturbation.diffuse}};
+  j["perturbation"] = {{"rotation_deg", perturbation.rotationDeg},
+                       {"view_coverage", perturbation.viewCoverage},
+                       {"scale", perturbation.scale},
+                       {"shift_pixels", perturbation.shiftPixels},
+                       {"light_direction", perturbation.lightDirection},
+                       {"ambient", perturbation.ambient},
+                       {"diffuse", perturbation.diffuse}};
   j["texture_variance"] = textureVariance;
   j["texture_max_modes"] = textureMaxModes;
   j["shape"] = {{"variance_kept", shape.varianceKept},

@@ -13,7 +13,11 @@ namespace clm3d {
 
 // Random perturbations of each training render around its view centre (uniform in +-range).
 struct PerturbationSettings {
-  double rotationDeg = 5.0;     // pitch, yaw and roll jitter
+  double rotationDeg = 5.0;  // pitch, yaw and roll jitter
+  // Pitch and yaw jitter widened to this share of half the distance to the nearest other view
+  // centre (never below rotationDeg), so that each view's patches have seen the whole range of
+  // poses the search will use the view for; 0 keeps +-rotationDeg.
+  double viewCoverage = 1.0;
   double scale = 0.05;          // relative face size jitter
   double shiftPixels = 0.5;     // sub-pixel shift of the face at the finest scale
   double lightDirection = 0.3;  // jitter of each component of the light direction

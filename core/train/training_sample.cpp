@@ -1,7 +1,9 @@
 #include "core/train/training_sample.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
@@ -37,6 +39,16 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
   return r.next();
 }
 
+// Distance from `centre` to the nearest different entry of `centres` (0 when there is none).
+double nearestOtherCentre(const std::vector<double>& centres, double centre) {
+  double nearest = 0.0;
+  for (double c : centres) {
+    const double d = std::abs(c - centre);
+    if (d > 1e-9 && (nearest == 0.0 || d < nearest)) nearest = d;
+  }
+  return nearest;
+}
+
 }  // namespace
 
 SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std::uint64_t seed,
@@ -47,8 +59,12 @@ SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std
   Random random(key);
   const PerturbationSettings& p = settings.perturbation;
   SampleSpec spec;
-  spec.pitchDeg = view.pitchDeg + random.symmetric(p.rotationDeg);
-  spec.yawDeg = view.yawDeg + random.symmetric(p.rotationDeg);
+  const auto range = [&](const std::vector<double>& centres, double centre) {
+    if (settings.singleView) return p.rotationDeg;
+    return std::max(p.rotationDeg, p.viewCoverage * 0.5 * nearestOtherCentre(centres, centre));
+  };
+  spec.pitchDeg = view.pitchDeg + random.symmetric(range(settings.pitchesDeg, view.pitchDeg));
+  spec.yawDeg = view.yawDeg + random.symmetric(range(settings.yawsDeg, view.yawDeg));
   spec.rollDeg = random.symmetric(p.rotationDeg);
   spec.scale = 1.0 + random.symmetric(p.scale);
   spec.shiftPixels.x() = random.symmetric(p.shiftPixels);
