@@ -37,6 +37,8 @@ struct TrackArgs {
   fs::path model, video, out, overlay, init;
   FitOptions fit;
   double minConfidence = TrackerSettings{}.minConfidence;
+  double motionPrediction = TrackerSettings{}.motionPrediction;
+  double viewSearch = TrackerSettings{}.viewSearchConfidence;
   bool quiet = false;
 };
 
@@ -47,6 +49,8 @@ void runTrack(const TrackArgs& args) {
   settings.fit = args.fit.settings();
   settings.detector = args.fit.detectorKind();
   settings.minConfidence = args.minConfidence;
+  settings.motionPrediction = args.motionPrediction;
+  settings.viewSearchConfidence = args.viewSearch;
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
@@ -129,6 +133,18 @@ void addTrackCommand(CLI::App& root) {
       ->add_option("--min-confidence", args->minConfidence,
                    "mean NCC below which a frame counts as failed and the face is re-detected")
       ->capture_default_str();
+  command
+      ->add_option("--motion-prediction", args->motionPrediction,
+                   "share of the last frame-to-frame pose change each frame's start is moved on "
+                   "by (0 = start from the previous pose)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 2.0));
+  command
+      ->add_option("--view-search", args->viewSearch,
+                   "mean NCC below which a frame is also searched from the neighbouring views "
+                   "(0 = never)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   addFitOptions(*command, args->fit);
   command->callback([args] { runTrack(*args); });

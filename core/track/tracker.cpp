@@ -34,12 +34,72 @@ Tracker::~Tracker() = default;
 
 void Tracker::reset() {
   state_.reset();
+  before_.reset();
   view_ = -1;
 }
 
 void Tracker::setState(const FitState& state, int view) {
   state_ = state;
+  before_.reset();
   view_ = view;
+}
+
+template <typename Attempt>
+void Tracker::searchNeighbouringViews(TrackStep& step, Attempt& attempt) {
+  const int current = step.fit->view;
+  const ViewModel& here = model_->views[static_cast<std::size_t>(current)];
+  // The nearest view centre on either side in yaw, at the same pitch.
+  int sides[2] = {-1, -1};
+  for (std::size_t v = 0; v < model_->views.size(); ++v) {
+    const ViewModel& view = model_->views[v];
+    if (view.pitchDeg != here.pitchDeg || view.yawDeg == here.yawDeg) continue;
+    const int side = view.yawDeg < here.yawDeg ? 0 : 1;
+    const int best = sides[side];
+    if (best < 0 ||
+        std::abs(view.yawDeg - here.yawDeg) <
+            std::abs(model_->views[static_cast<std::size_t>(best)].yawDeg - here.yawDeg)) {
+      sides[side] = static_cast<int>(v);
+    }
+  }
+  TrackStep best = step;
+  bool lastIsBest = true;
+  const FitState from = step.fit->state;
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  for (const int v : sides) {
+    if (v < 0) continue;
+    FitState start = from;
+    // Half-way to the neighbour's centre: inside its cell, and a step the search can make up.
+    start.pose.yaw =
+        0.5 * (from.pose.yaw + model_->views[static_cast<std::size_t>(v)].yawDeg * kDeg);
+    attempt(start, v);
+    const bool better = step.fit && step.failure == TrackFailure::None &&
+                        step.fit->confidence > best.fit->confidence + settings_.viewSearchMargin;
+    if (better) {
+      best = step;
+      lastIsBest = true;
+    } else {
+      lastIsBest = false;
+    }
+  }
+  if (!lastIsBest) {
+    // The overlay draws the fitter's last templates: search once more from the kept result.
+    attempt(best.fit->state, best.fit->view);
+    if (!step.fit || step.fit->confidence < best.fit->confidence) step = best;
+  }
+}
+
+FitState Tracker::nextStart() const {
+  FitState start = *state_;
+  if (!before_ || settings_.motionPrediction <= 0.0) return start;
+  const double k = settings_.motionPrediction;
+  const Pose& last = state_->pose;
+  const Pose& before = before_->pose;
+  start.pose.translation.head<2>() += k * (last.translation - before.translation).head<2>();
+  start.pose.scale *= std::pow(last.scale / before.scale, k);
+  start.pose.pitch += k * (last.pitch - before.pitch);
+  start.pose.yaw += k * (last.yaw - before.yaw);
+  start.pose.roll += k * (last.roll - before.roll);
+  return start;
 }
 
 FaceDetector& Tracker::detector() {
@@ -78,6 +138,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   step.row.timestamp = timestamp;
   step.row.points = Eigen::Matrix2Xd::Constant(2, model_->shape.pointCount(),
                                                std::numeric_limits<double>::quiet_NaN());
+  double searchMs = 0.0;  // every search of the frame
   const auto attempt = [&](const FitState& start, int view) {
     const auto begin = std::chrono::steady_clock::now();
     try {
@@ -88,12 +149,20 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
       step.fit.reset();
       step.failure = TrackFailure::LeftImage;
     }
-    step.fitMilliseconds =
+    searchMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
   };
 
   const bool fromPrevious = state_.has_value();
-  if (fromPrevious) attempt(*state_, view_);
+  if (fromPrevious) {
+    attempt(nextStart(), view_);
+    // A prediction that overshoots (the head stopped or turned back) gets a second try from
+    // where the face last was, before falling back to the detector.
+    if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
+    if (step.fit && step.fit->confidence < settings_.viewSearchConfidence) {
+      searchNeighbouringViews(step, attempt);
+    }
+  }
   if (!fromPrevious || step.failure != TrackFailure::None) {
     const std::vector<FaceBox> faces = detector().detect(frame);
     if (!faces.empty()) {
@@ -104,7 +173,13 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     }
   }
 
+  step.fitMilliseconds = searchMs;
   if (step.failure == TrackFailure::None && step.fit) {
+    if (fromPrevious && !step.detected) {
+      before_ = state_;
+    } else {
+      before_.reset();  // a detection is no motion
+    }
     state_ = step.fit->state;
     view_ = step.fit->view;
   } else {

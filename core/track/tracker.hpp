@@ -25,6 +25,16 @@ struct TrackerSettings {
   // with every mode clamped to +-3 SD, 2.5 means most modes are pressed against their limits.
   double maxShapeRms = 2.5;
   double minInterOcularPixels = 8.0;  // a smaller face is a lost track
+  // Each frame starts from the previous pose moved on by this share of the last frame-to-frame
+  // pose change (constant-velocity prediction; the shape is not extrapolated), so a turning head
+  // does not leave the search a growing lag to make up. 0 starts from the previous pose.
+  double motionPrediction = 1.0;
+  // A frame tracked with a mean NCC below this is searched again from the neighbouring views in
+  // yaw (half-way to their centres), and the better result kept if its NCC is higher by the
+  // margin: a head turning past a view's range is caught by the next view before it is lost.
+  // 0 switches the search off.
+  double viewSearchConfidence = 0.7;
+  double viewSearchMargin = 0.02;
 };
 
 // Why a frame failed (or None).
@@ -36,7 +46,7 @@ struct TrackStep {
   std::optional<FitResult> fit;  // absent when no face was found
   TrackFailure failure = TrackFailure::None;
   bool detected = false;         // this frame started from a detection
-  double fitMilliseconds = 0.0;  // the search alone (no detection, no decoding)
+  double fitMilliseconds = 0.0;  // all searches of the frame (no detection, no decoding)
 };
 
 class Tracker {
@@ -50,12 +60,17 @@ class Tracker {
   void reset();
   // Start the next frame from this state (a hand-corrected frame, or --init points).
   void setState(const FitState& state, int view = -1);
+  // Where the next frame's search starts: the last state, its pose moved on by the motion
+  // prediction once two consecutive frames were tracked. Only valid while tracking (not lost).
+  FitState nextStart() const;
 
   Fitter& fitter() { return fitter_; }
   const TrackerSettings& settings() const { return settings_; }
 
  private:
   TrackFailure judge(const FitResult& fit) const;
+  template <typename Attempt>
+  void searchNeighbouringViews(TrackStep& step, Attempt& attempt);
   FaceDetector& detector();
 
   const ClmModel* model_;
@@ -64,6 +79,7 @@ class Tracker {
   Fitter fitter_;
   std::unique_ptr<FaceDetector> detector_;
   std::optional<FitState> state_;
+  std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction
   int view_ = -1;
 };
 

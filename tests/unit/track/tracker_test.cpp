@@ -58,6 +58,64 @@ TEST(Tracker, FollowsAHeldOutHeadFromTheFirstFrame) {
   EXPECT_LT(worst, 0.08);
 }
 
+TEST(Tracker, NextFrameStartsFromTheExtrapolatedPose) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 10.0, 0, 60.0);
+  for (const double k : {0.0, 1.0, 0.5}) {
+    TrackerSettings settings;
+    settings.motionPrediction = k;
+    Tracker tracker(model, scene.camera, settings);
+    FitState start = scene.truth;
+    start.pose.yaw -= 0.1;  // the previous frame, 6 degrees behind
+    tracker.setState(start);
+    EXPECT_EQ(tracker.nextStart().pose.yaw, start.pose.yaw);  // no motion seen yet
+    const TrackStep step = tracker.track(scene.image, 0, 0.0);
+    ASSERT_TRUE(step.row.success) << toString(step.failure);
+    const Pose& last = step.fit->state.pose;
+    const FitState next = tracker.nextStart();
+    EXPECT_NEAR(next.pose.yaw, last.yaw + k * (last.yaw - start.pose.yaw), 1e-12) << k;
+    EXPECT_NEAR(next.pose.pitch, last.pitch + k * (last.pitch - start.pose.pitch), 1e-12) << k;
+    EXPECT_NEAR(next.pose.translation.x(),
+                last.translation.x() + k * (last.translation.x() - start.pose.translation.x()),
+                1e-9);
+    EXPECT_EQ(next.shape, step.fit->state.shape);  // the shape is not extrapolated
+    tracker.setState(step.fit->state);
+    EXPECT_EQ(tracker.nextStart().pose.yaw, last.yaw);  // a new start forgets the motion
+  }
+}
+
+TEST(Tracker, ALowConfidenceFrameIsSearchedFromTheNeighbouringView) {
+  // The head is at -30 degrees but the track still believes it frontal, in the frontal view: the
+  // frontal search alone does not get there; searching from the -30 view does.
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, -30.0, test::kHeldOutHead, 60.0);
+  int frontal = -1;
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    if (model.views[v].yawDeg == 0.0) frontal = static_cast<int>(v);
+  }
+  ASSERT_GE(frontal, 0);
+  FitState start = scene.truth;
+  start.pose.yaw = 0.0;
+  const auto trackOnce = [&](double viewSearch) {
+    TrackerSettings settings;
+    settings.viewSearchConfidence = viewSearch;
+    settings.minConfidence = 0.0;  // judge the search, not the failure test
+    Tracker tracker(model, scene.camera, settings);
+    tracker.setState(start, frontal);
+    return tracker.track(scene.image, 0, 0.0);
+  };
+  const TrackStep alone = trackOnce(0.0);
+  const TrackStep searched = trackOnce(1.0);  // search every frame
+  ASSERT_TRUE(alone.fit && searched.fit);
+  EXPECT_EQ(alone.fit->view, frontal);
+  EXPECT_EQ(model.views[static_cast<std::size_t>(searched.fit->view)].yawDeg, -30.0);
+  EXPECT_GT(searched.fit->confidence, alone.fit->confidence);
+  const double aloneError = frameError(alone.row.points, scene.truthPoints);
+  const double searchedError = frameError(searched.row.points, scene.truthPoints);
+  EXPECT_LT(searchedError, 0.1) << "frontal alone: " << aloneError;
+  EXPECT_LT(searchedError, 0.5 * aloneError);
+}
+
 TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0, 0, 70.0);
