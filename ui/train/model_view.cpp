@@ -75,6 +75,9 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), loader_(new JobRunner(t
 }
 
 void ModelView::clear() {
+  // A read still running delivers into the old slot and shows nothing.
+  pending_.clear();
+  loading_ = std::make_shared<std::shared_ptr<ClmModel>>();
   model_.reset();
   file_.clear();
   patches_->clear();

@@ -77,6 +77,12 @@ TrainPage::TrainPage(QWidget* parent) : Page(parent) {
 }
 
 void TrainPage::setProject(Project* project) {
+  if (run_->isRunning() && project != project_) {
+    // The run's model belongs to the project it started in, which is going away: stop it (a
+    // cancelled run leaves no file) rather than add the model to another project.
+    run_->appendLog(tr("The project was closed."));
+    run_->cancel();
+  }
   project_ = project;
   models_->clear();
   refreshProject();

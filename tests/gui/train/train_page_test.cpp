@@ -242,6 +242,17 @@ class TrainPageTest : public QObject {
     QVERIFY(!fs::exists(folder.path() / "models" / "cancelled.clm3d"));
     QVERIFY(project.models.empty());
     QVERIFY(page.runPanel()->log()->toPlainText().contains("cancelled"));
+
+    // Switching projects during a run stops it: its model belongs to neither project.
+    page.runPanel()->setModelName("switched");
+    QTest::mouseClick(page.findChild<QPushButton*>("trainButton"), Qt::LeftButton);
+    QVERIFY(page.isBusy());
+    Project other = makeProject(folder.path() / "other", "1-2");
+    page.setProject(&other);
+    QVERIFY(test::waitUntil([&] { return ended.count() == 2; }, 30000));
+    QCOMPARE(cancelled.count(), 2);
+    QVERIFY(!fs::exists(folder.path() / "models" / "switched.clm3d"));
+    QVERIFY(project.models.empty() && other.models.empty());
   }
 
   void aBrokenManifestOrScanEndsInAnErrorDialog() {
