@@ -34,13 +34,7 @@ PlayerBar::PlayerBar(QWidget* parent) : QWidget(parent) {
   connect(previous, &QPushButton::clicked, this, [this] { emit step(-1); });
   connect(next, &QPushButton::clicked, this, [this] { emit step(+1); });
   connect(play_, &QPushButton::clicked, this, &PlayerBar::togglePlaying);
-  connect(&timer_, &QTimer::timeout, this, [this] {
-    if (frame_ + 1 >= frameCount_) {
-      setPlaying(false);
-    } else {
-      emit step(+1);
-    }
-  });
+  connect(&timer_, &QTimer::timeout, this, [this] { emit step(+1); });
   setFps(30.0);
   setPosition(0, 0);
 }
@@ -55,11 +49,12 @@ void PlayerBar::setPosition(int frame, int frameCount) {
   frameCount_ = frameCount;
   position_->setText(frameCount > 0 ? tr("frame %1 of %2").arg(frame).arg(frameCount)
                                     : tr("no video"));
+  if (isPlaying() && frame + 1 >= frameCount) setPlaying(false);  // stopped on the last frame
 }
 
 void PlayerBar::setPlaying(bool playing) {
   if (playing == isPlaying()) return;
-  if (playing && frameCount_ <= 1) return;
+  if (playing && frame_ + 1 >= frameCount_) return;  // nothing left to play
   if (playing) {
     timer_.start();
   } else {

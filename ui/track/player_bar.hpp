@@ -1,6 +1,6 @@
 // Play / pause and step buttons under the timeline, with the playback clock: while playing, a
 // timer at the video's frame rate asks the page for the next frame (the page decodes it on the GUI
-// thread; one decode is a few ms, measured in the tests) and playback stops at the last frame.
+// thread; one decode is a few ms, measured in the tests); playback stops on the last frame.
 #pragma once
 
 #include <QTimer>

@@ -243,6 +243,25 @@ void TrackPage::connectShortcuts() {
 }
 
 void TrackPage::setProject(Project* project) {
+  if (project != project_) {
+    // Another project: its files are not this video's; the shell has asked about unsaved work.
+    runner_->cancel();
+    runner_->wait();
+    job_ = Job::None;  // the queued end of a cancelled job has nothing left to take over
+    trackOutcome_.reset();
+    retrackOutcome_.reset();
+    player_->setPlaying(false);
+    undo_.clear();
+    session_ = TrackSession{};
+    frames_->close();
+    overlayFitter_.reset();
+    modelPath_.clear();
+    tracksCsv_.clear();
+    current_ = 0;
+    refreshTimeline();
+    showFrame();
+    updateControls();
+  }
   project_ = project;
   fillProjectLists();
   if (project_ && !project_->models.empty() && modelPath_.empty())

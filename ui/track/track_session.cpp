@@ -67,7 +67,16 @@ void TrackSession::replaceTrackAfter(int corrected, std::vector<TrackRow> rows,
                                      std::vector<std::optional<FrameFit>> fits) {
   const auto keep = static_cast<std::size_t>(corrected + 1);
   if (track_.rows.size() > keep) track_.rows.resize(keep);
-  if (fits_.size() > keep) fits_.resize(keep);
+  // Frames a cancelled run did not reach, up to the corrected one, stay untracked rows, so that
+  // row i is still frame i.
+  while (track_.rows.size() < keep) {
+    TrackRow row;
+    row.frame = static_cast<int>(track_.rows.size());
+    row.timestamp = row.frame / video_.fps;
+    row.points = Eigen::Matrix2Xd::Constant(2, track_.landmarkCount,
+                                            std::numeric_limits<double>::quiet_NaN());
+    track_.rows.push_back(std::move(row));
+  }
   fits_.resize(keep);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     track_.rows.push_back(std::move(rows[i]));
@@ -102,7 +111,11 @@ void TrackSession::setTruth(GroundTruthSet truth) {
 
 bool TrackSession::hasPoints(int frame) const {
   if (frame < 0 || frame >= truth_.frameCount()) return false;
-  return truth_.table.rows[static_cast<std::size_t>(frame)].points.cols() > 0;
+  const Eigen::Matrix2Xd& points = truth_.table.rows[static_cast<std::size_t>(frame)].points;
+  for (int i = 0; i < points.cols(); ++i) {
+    if (points.col(i).allFinite()) return true;
+  }
+  return false;
 }
 
 void TrackSession::setReference(std::optional<TrackTable> reference) {

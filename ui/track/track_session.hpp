@@ -61,7 +61,7 @@ class TrackSession {
   const GroundTruthSet& truth() const { return truth_; }
   GroundTruthSet& truth() { return truth_; }
   void setTruth(GroundTruthSet truth);
-  bool hasPoints(int frame) const;  // the truth row of the frame has landmarks to show
+  bool hasPoints(int frame) const;  // the frame's truth row has at least one landmark
 
   // A reference (a ground truth loaded to compare with); without one, the keyframes are the
   // reference. Per-frame mean error (eq 5.1) of the track, NaN where not scored.

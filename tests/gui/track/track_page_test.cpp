@@ -28,6 +28,7 @@
 #include "tests/support/fit_fixture.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/frame_view.hpp"
+#include "ui/track/player_bar.hpp"
 #include "ui/track/timeline_widget.hpp"
 
 namespace clm3d::ui {
@@ -213,6 +214,7 @@ class TrackPageTest : public QObject {
     page_->setCurrentFrame(kFrames - 5);
     QTest::keyClick(page_.get(), Qt::Key_Space);
     QVERIFY(test::waitUntil([&] { return page_->currentFrame() == kFrames - 1; }, 5000));
+    QVERIFY(!page_->findChild<PlayerBar*>("playerBar")->isPlaying());  // stopped at the end
     screenshot(*page_, "studio-track.png");
   }
 
