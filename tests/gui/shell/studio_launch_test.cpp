@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QTimer>
 
 #include "core/project/project.hpp"
 #include "tests/gui/project/isolated_settings.hpp"
@@ -60,6 +61,22 @@ class StudioLaunchTest : public QObject {
     QVERIFY(!std::filesystem::exists(temp.path() / "never.png"));
   }
 
+  // Opening a project hands it to every page on the GUI thread: the event loop must not stall
+  // over 100 ms. CLM3D_STUDIO_MEASURE_PROJECT=DIR (e.g. a `clm3d demo` folder) measures that
+  // project too and prints the figure (docs/studio.md).
+  void openingAProjectDoesNotStallTheGuiThread() {
+    test::TempFolder temp;
+    createProject(temp.path() / "empty");
+    const double empty = longestStallOpening(toQString(temp.path() / "empty"));
+    qInfo("longest GUI stall opening an empty project with every page: %.1f ms", empty);
+    QVERIFY2(empty < 100.0, qPrintable(QString("stall %1 ms").arg(empty)));
+    const QString measured = qEnvironmentVariable("CLM3D_STUDIO_MEASURE_PROJECT");
+    if (!measured.isEmpty()) {
+      qInfo("longest GUI stall opening %s: %.1f ms", qPrintable(measured),
+            longestStallOpening(measured));
+    }
+  }
+
   void helpAndBadArgumentsNeedNoWindow() {
     QCOMPARE(answerWithoutWindow({"clm3d-studio", "--help"}), std::optional<int>(0));
     QCOMPARE(answerWithoutWindow({"clm3d-studio", "project-folder"}), std::nullopt);
@@ -81,6 +98,9 @@ class StudioLaunchTest : public QObject {
  private:
   // The title of the last page built into this studio, or empty when it has none.
   static QString pageTitle();
+  // Shows the standard window, opens the project from the event loop and returns the longest
+  // stall of the loop until a second after it opened.
+  static double longestStallOpening(const QString& project);
 
   test::IsolatedSettings settings_;
 };
@@ -93,6 +113,20 @@ class StudioLaunchTest : public QObject {
 QString clm3d::ui::StudioLaunchTest::pageTitle() {
   MainWindow window;
   return window.pages().isEmpty() ? QString() : window.pages().last()->title();
+}
+
+double clm3d::ui::StudioLaunchTest::longestStallOpening(const QString& project) {
+  MainWindow window;
+  window.show();
+  if (!QTest::qWaitForWindowExposed(&window)) return 1e9;
+  QTest::qWait(200);
+  test::StallWatchdog watchdog;
+  watchdog.start();
+  QTimer::singleShot(20, &window, [&window, project] { window.openProject(project); });
+  test::waitUntil([&] { return window.session().isOpen(); }, 20000);
+  QTest::qWait(1000);
+  watchdog.stop();
+  return watchdog.longestStallMs();
 }
 
 int main(int argc, char** argv) {
