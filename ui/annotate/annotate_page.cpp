@@ -136,17 +136,25 @@ void AnnotatePage::buildActions() {
                               tr("Save the landmarks (LJSON v3)"));
   connect(saveAction_, &QAction::triggered, this, &AnnotatePage::save);
 
-  undoAction_ = undoStack_->createUndoAction(this, tr("Undo"));
-  undoAction_->setObjectName("undo");
-  undoAction_->setShortcuts(QKeySequence::Undo);
-  undoAction_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-  addAction(undoAction_);
-  redoAction_ = undoStack_->createRedoAction(this, tr("Redo"));
-  redoAction_->setObjectName("redo");
-  redoAction_->setShortcuts(
-      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))});
-  redoAction_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-  addAction(redoAction_);
+  // Fixed texts (the step's name goes to the tooltip) keep the toolbar from jumping.
+  undoAction_ =
+      addPageAction("undo", tr("Undo"), QKeySequence::keyBindings(QKeySequence::Undo), tr("Undo"));
+  connect(undoAction_, &QAction::triggered, undoStack_, &QUndoStack::undo);
+  connect(undoStack_, &QUndoStack::canUndoChanged, undoAction_, &QAction::setEnabled);
+  connect(undoStack_, &QUndoStack::undoTextChanged, undoAction_, [this](const QString& text) {
+    undoAction_->setToolTip(tr("Undo %1 (Ctrl+Z)").arg(text));
+  });
+  redoAction_ = addPageAction(
+      "redo", tr("Redo"),
+      {QKeySequence(QStringLiteral("Ctrl+Shift+Z")), QKeySequence(QStringLiteral("Ctrl+Y"))},
+      tr("Redo"));
+  connect(redoAction_, &QAction::triggered, undoStack_, &QUndoStack::redo);
+  connect(undoStack_, &QUndoStack::canRedoChanged, redoAction_, &QAction::setEnabled);
+  connect(undoStack_, &QUndoStack::redoTextChanged, redoAction_, [this](const QString& text) {
+    redoAction_->setToolTip(tr("Redo %1 (Ctrl+Shift+Z)").arg(text));
+  });
+  undoAction_->setEnabled(false);
+  redoAction_->setEnabled(false);
 
   previousScanAction_ = addPageAction("previousScan", tr("◀ Scan"), {Qt::Key_PageUp},
                                       tr("Previous scan of the manifest (saves changes first)"));
@@ -186,7 +194,7 @@ void AnnotatePage::buildActions() {
   labelsAction_ = addPageAction("toggleLabels", tr("Labels"), {Qt::Key_L},
                                 tr("Show or hide the landmark ids in the view"));
   labelsAction_->setCheckable(true);
-  labelsAction_->setChecked(true);
+  labelsAction_->setChecked(false);
   connect(labelsAction_, &QAction::toggled, this, [this](bool on) { view_->setLabelsVisible(on); });
 }
 

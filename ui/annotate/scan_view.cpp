@@ -186,7 +186,7 @@ void ScanView::setGhost(const std::optional<Eigen::Vector3d>& point) {
 
 double ScanView::markerRadius() const {
   if (!meshData_) return 1.5;
-  return std::clamp(0.004 * meshData_->GetLength(), 0.3, 10.0);
+  return std::clamp(0.005 * meshData_->GetLength(), 0.3, 10.0);
 }
 
 void ScanView::rebuildMarkers() {

@@ -83,7 +83,7 @@ class ScanView : public QVTKOpenGLNativeWidget {
   Eigen::Vector3d front_ = Eigen::Vector3d::UnitZ();
   std::optional<Eigen::Vector3d> ghost_;
   bool textureVisible_ = true;
-  bool labelsVisible_ = true;
+  bool labelsVisible_ = false;  // the current landmark's label is always shown
   bool renderScheduled_ = false;
 };
 
