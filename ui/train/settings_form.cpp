@@ -172,6 +172,11 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   rotation_ = realField("rotationJitter", 0, 20, 0.5, 1,
                         tr("Pitch, yaw and roll jitter of each render around its view centre, in "
                            "degrees (0-20)."));
+  viewCoverage_ = realField(
+      "viewCoverage", 0, 1.5, 0.1, 2,
+      tr("Widens the pitch/yaw jitter to this share of half the distance to the nearest other "
+         "view centre (never below the rotation), so each view's patches cover the poses the "
+         "search uses the view for (0-1.5; 0 = the rotation jitter only)."));
   scaleJitter_ = realField("scaleJitter", 0, 0.3, 0.01, 3,
                            tr("Relative face size jitter (0-0.3; 0.05 = +-5 %)."));
   shift_ = realField("shiftJitter", 0, 4, 0.1, 2,
@@ -183,6 +188,7 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   diffuse_ = realField("diffuseJitter", 0, 0.6, 0.05, 2,
                        tr("Jitter of the diffuse light term (0-0.6; the term is 0.65)."));
   addRow(jitter, tr("Rotation (deg)"), rotation_);
+  addRow(jitter, tr("View coverage"), viewCoverage_);
   addRow(jitter, tr("Scale"), scaleJitter_);
   addRow(jitter, tr("Shift (px)"), shift_);
   addRow(jitter, tr("Light direction"), light_);
@@ -229,6 +235,7 @@ TrainSettings SettingsForm::settings() const {
   s.shape.limitSd = shapeLimit_->value();
   s.shape.mirror = mirrorShapes_->isChecked();
   s.perturbation.rotationDeg = rotation_->value();
+  s.perturbation.viewCoverage = viewCoverage_->value();
   s.perturbation.scale = scaleJitter_->value();
   s.perturbation.shiftPixels = shift_->value();
   s.perturbation.lightDirection = light_->value();
@@ -260,6 +267,7 @@ void SettingsForm::setSettings(const TrainSettings& s) {
   shapeLimit_->setValue(s.shape.limitSd);
   mirrorShapes_->setChecked(s.shape.mirror);
   rotation_->setValue(s.perturbation.rotationDeg);
+  viewCoverage_->setValue(s.perturbation.viewCoverage);
   scaleJitter_->setValue(s.perturbation.scale);
   shift_->setValue(s.perturbation.shiftPixels);
   light_->setValue(s.perturbation.lightDirection);

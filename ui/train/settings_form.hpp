@@ -42,6 +42,7 @@ class SettingsForm : public QWidget {
   QDoubleSpinBox* shapeLimit_;
   QCheckBox* mirrorShapes_;
   QDoubleSpinBox* rotation_;
+  QDoubleSpinBox* viewCoverage_;
   QDoubleSpinBox* scaleJitter_;
   QDoubleSpinBox* shift_;
   QDoubleSpinBox* light_;

@@ -87,7 +87,7 @@ class TrainPageTest : public QObject {
     SettingsForm form;
     const TrainSettings defaults;
     const TrainSettings shown = form.settings();
-    QCOMPARE(shown.toJson(), defaults.toJson());
+    QCOMPARE(QString::fromStdString(shown.toJson()), QString::fromStdString(defaults.toJson()));
     const TrainSettings tiny = tinySettings(2);
     form.setSettings(tiny);
     QCOMPARE(form.settings().toJson(), tiny.toJson());
