@@ -9,6 +9,8 @@
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <thread>
 
 #include "core/common/error.hpp"
 
@@ -200,8 +202,8 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
                                "seed and data give the same model."));
   seed_->setValidator(new QRegularExpressionValidator(QRegularExpression("[0-9]{1,19}"), seed_));
   threads_ = intField("threads", 0, 64,
-                      tr("Worker threads for loading and rendering (0 = one per core). The "
-                         "model does not depend on it."));
+                      tr("Worker threads for loading and rendering (0 = one per core but one, "
+                         "which keeps the window responsive). The model does not depend on it."));
   addRow(run, tr("Seed"), seed_);
   addRow(run, tr("Threads"), threads_);
   secondColumn->addStretch(1);
@@ -244,7 +246,10 @@ TrainSettings SettingsForm::settings() const {
   bool ok = false;
   s.seed = seed_->text().toULongLong(&ok);
   if (!ok) throw InputError("training settings: seed: enter a whole number >= 0");
-  s.threads = threads_->value();
+  // 0: every core but one, so that the GUI thread is never starved by the renders.
+  s.threads = threads_->value() > 0
+                  ? threads_->value()
+                  : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
   s.validate();
   return s;
 }

@@ -68,7 +68,7 @@ TrainSettings tinySettings(int scales = 1) {
   s.samplesPerView = 3;
   s.hiddenShare = 1.0;
   s.supersample = 1;
-  s.threads = 2;
+  s.threads = 1;  // one core stays with the GUI thread, as the page's default (0) does
   return s;
 }
 
