@@ -87,6 +87,18 @@ QString missingDemoMessage(const QString& demoDir) {
       .arg(demoDir, file);
 }
 
+QString projectToOpen(const StudioOptions& options, QString* error) {
+  if (options.demo) {
+    const QString missing = missingDemoMessage(options.demoDir);
+    if (error != nullptr) *error = missing;
+    return missing.isEmpty() ? options.demoDir : QString();
+  }
+  if (!options.project.isEmpty() || !options.screenshot.isEmpty()) return options.project;
+  const QString last = lastProject();
+  const bool reopen = loadPreferences().reopenLastProject && !last.isEmpty();
+  return reopen && recentProjects().contains(last) ? last : QString();
+}
+
 std::optional<int> answerWithoutWindow(const QStringList& arguments) {
   QCommandLineParser parser;
   addOptions(parser);
@@ -145,17 +157,8 @@ int runStudio(const StudioOptions& options) {
     return kExitBadUsage;
   }
 
-  QString project = options.project;
   QString startError;
-  if (options.demo) {
-    startError = missingDemoMessage(options.demoDir);
-    if (startError.isEmpty()) project = options.demoDir;
-  } else if (project.isEmpty() && !screenshot) {
-    const QString last = lastProject();
-    if (loadPreferences().reopenLastProject && !last.isEmpty() && recentProjects().contains(last)) {
-      project = last;
-    }
-  }
+  const QString project = projectToOpen(options, &startError);
 
   if (screenshot) {
     // No one is there to answer a dialog: report on stderr and fail instead.

@@ -37,6 +37,11 @@ int runStudio(const StudioOptions& options);
 // as a PNG; false (with the reason in *error) if the file cannot be written.
 bool saveWindowScreenshot(QWidget& window, const QString& file, QString* error);
 
+// The project to open at start: the one given, the demo's, or (preference "reopen last project",
+// not in screenshot mode) the one open at the last quit if it still exists; empty for none. A
+// missing demo project gives an empty result and its message in *error.
+QString projectToOpen(const StudioOptions& options, QString* error);
+
 // The message for a --demo folder without a project, or an empty string when it has one.
 QString missingDemoMessage(const QString& demoDir);
 

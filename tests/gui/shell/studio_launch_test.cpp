@@ -84,6 +84,37 @@ class StudioLaunchTest : public QObject {
     }
   }
 
+  void theLastProjectReopensUnlessTurnedOffOrGone() {
+    test::TempFolder temp;
+    ProjectSession session;
+    session.createNew(temp.path() / "last");
+    const QString last = toQString(temp.path() / "last");
+    QString error;
+    QCOMPARE(projectToOpen(StudioOptions{}, &error), last);
+    QVERIFY(error.isEmpty());
+    StudioOptions given;
+    given.project = "elsewhere";
+    QCOMPARE(projectToOpen(given, &error), QString("elsewhere"));
+    StudioOptions shot;
+    shot.screenshot = "x.png";
+    QCOMPARE(projectToOpen(shot, &error), QString());
+
+    StudioPreferences preferences;
+    preferences.reopenLastProject = false;
+    savePreferences(preferences);
+    QCOMPARE(projectToOpen(StudioOptions{}, &error), QString());
+    preferences.reopenLastProject = true;
+    savePreferences(preferences);
+    std::filesystem::remove_all(temp.path() / "last");
+    QCOMPARE(projectToOpen(StudioOptions{}, &error), QString());
+
+    StudioOptions demo;
+    demo.demo = true;
+    demo.demoDir = last;
+    QCOMPARE(projectToOpen(demo, &error), QString());
+    QVERIFY(error.contains("clm3d demo --out " + last));
+  }
+
   void helpAndBadArgumentsNeedNoWindow() {
     QCOMPARE(answerWithoutWindow({"clm3d-studio", "--help"}), std::optional<int>(0));
     QCOMPARE(answerWithoutWindow({"clm3d-studio", "project-folder"}), std::nullopt);
