@@ -31,23 +31,8 @@ TrackSummary retrackFrom(
   Tracker tracker(model, camera, settings);
   tracker.setState(state, view);
   const int remaining = total > 0 ? total - corrected - 1 : 0;
-  cv::Mat frame;
-  while (true) {
-    if (cancel != nullptr) cancel->throwIfCancelled();
-    if (!reader.read(frame)) break;
-    TrackStep step = tracker.track(frame, reader.frameIndex(), reader.timestamp());
-    ++summary.frames;
-    if (step.row.success) ++summary.succeeded;
-    if (step.detected) ++summary.detections;
-    if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
-    if (perFrame) perFrame(frame, step, tracker);
-    rows.push_back(std::move(step.row));
-    if (progress && remaining > 0) {
-      progress(std::min(1.0, static_cast<double>(summary.frames) / remaining), "re-tracking");
-    }
-  }
-  if (progress) progress(1.0, "re-tracking");
-  return summary;
+  return trackRemainingFrames(reader, tracker, rows, remaining, "re-tracking", perFrame, progress,
+                              cancel);
 }
 
 }  // namespace clm3d

@@ -209,6 +209,30 @@ double TrackSummary::medianMilliseconds() const {
   return percentileMilliseconds(0.5);
 }
 
+TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
+                                  std::vector<TrackRow>& rows, int expectedFrames,
+                                  std::string_view stage, const PerFrame& perFrame,
+                                  const ProgressCallback& progress, const CancelToken* cancel) {
+  TrackSummary summary;
+  cv::Mat frame;
+  while (true) {
+    if (cancel != nullptr) cancel->throwIfCancelled();
+    if (!reader.read(frame)) break;
+    TrackStep step = tracker.track(frame, reader.frameIndex(), reader.timestamp());
+    ++summary.frames;
+    if (step.row.success) ++summary.succeeded;
+    if (step.detected) ++summary.detections;
+    if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
+    if (perFrame) perFrame(frame, step, tracker);
+    rows.push_back(std::move(step.row));
+    if (progress && expectedFrames > 0) {
+      progress(std::min(1.0, static_cast<double>(summary.frames) / expectedFrames), stage);
+    }
+  }
+  if (progress) progress(1.0, stage);
+  return summary;
+}
+
 TrackSummary trackVideo(
     const std::filesystem::path& video, const ClmModel& model, const TrackerSettings& settings,
     TrackTable& table,
@@ -220,25 +244,8 @@ TrackSummary trackVideo(
   Tracker tracker(model, camera, settings);
   if (initial) tracker.setState(*initial);
   table.landmarkCount = model.shape.pointCount();
-  TrackSummary summary;
-  const int total = reader.frameCount();
-  cv::Mat frame;
-  while (true) {
-    if (cancel != nullptr) cancel->throwIfCancelled();
-    if (!reader.read(frame)) break;
-    TrackStep step = tracker.track(frame, reader.frameIndex(), reader.timestamp());
-    ++summary.frames;
-    if (step.row.success) ++summary.succeeded;
-    if (step.detected) ++summary.detections;
-    if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
-    if (perFrame) perFrame(frame, step, tracker);
-    table.rows.push_back(std::move(step.row));
-    if (progress && total > 0) {
-      progress(std::min(1.0, static_cast<double>(summary.frames) / total), "tracking");
-    }
-  }
-  if (progress) progress(1.0, "tracking");
-  return summary;
+  return trackRemainingFrames(reader, tracker, table.rows, reader.frameCount(), "tracking",
+                              perFrame, progress, cancel);
 }
 
 }  // namespace clm3d

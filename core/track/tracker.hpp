@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/common/progress.hpp"
@@ -16,6 +17,8 @@
 #include "core/track/track_table.hpp"
 
 namespace clm3d {
+
+class VideoReader;
 
 struct TrackerSettings {
   FitSettings fit;
@@ -91,6 +94,15 @@ struct TrackSummary {
   double medianMilliseconds() const;
   double percentileMilliseconds(double share) const;
 };
+
+// Tracks every frame `reader` has left with `tracker`, appending the rows to `rows`: the loop
+// trackVideo and retrackFrom share. Progress `stage` goes 0..1 over `expectedFrames` (0 = unknown);
+// Cancelled when cancelled, the rows so far kept.
+using PerFrame = std::function<void(const cv::Mat&, const TrackStep&, Tracker&)>;
+TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
+                                  std::vector<TrackRow>& rows, int expectedFrames,
+                                  std::string_view stage, const PerFrame& perFrame,
+                                  const ProgressCallback& progress, const CancelToken* cancel);
 
 // Tracks every frame of a video into `table` (rows in frame order). perFrame (optional) sees each
 // frame with its step, e.g. to draw the overlay. Progress stage "tracking". Throws InputError for
