@@ -69,26 +69,6 @@ QAction* action(AnnotatePage& page, const char* name) {
   return found;
 }
 
-// Presses the named button of the next visible message box with that object name.
-void answerNextMessageBox(const QString& objectName, QMessageBox::StandardButton button,
-                          bool* seen) {
-  auto* poll = new QTimer(qApp);
-  poll->setInterval(20);
-  QObject::connect(poll, &QTimer::timeout, poll, [poll, objectName, button, seen] {
-    for (QWidget* widget : QApplication::topLevelWidgets()) {
-      auto* box = qobject_cast<QMessageBox*>(widget);
-      if (box != nullptr && box->objectName() == objectName && box->isVisible()) {
-        *seen = true;
-        box->button(button)->click();
-        poll->stop();
-        poll->deleteLater();
-        return;
-      }
-    }
-  });
-  poll->start();
-}
-
 }  // namespace
 
 class AnnotatePageTest : public QObject {
@@ -392,19 +372,19 @@ class AnnotatePageTest : public QObject {
     autosaved.set(11, otherTruth_.point(11));
     autosaved.set(0, otherTruth_.point(0));
     writeLandmarks(autosavePathFor(ljson), autosaved, scheme());
-    bool seen = false;
-    answerNextMessageBox("recoverDialog", QMessageBox::Yes, &seen);
+    int seen = 0;
+    test::answerNextMessageBox("recoverDialog", QMessageBox::Yes, &seen);
     auto page = openPage(otherObj_);
-    QVERIFY(test::waitUntil([&] { return seen; }, 5000));
+    QVERIFY(test::waitUntil([&] { return seen > 0; }, 5000));
     QCOMPARE(page->document()->points().presentCount(), 2);
     QVERIFY((*page->document()->point(11) - otherTruth_.point(11)).norm() < 1e-6);
     QVERIFY(page->hasUnsavedChanges());
     page.reset();  // "crash": nothing saved, the autosave stays
 
-    seen = false;
-    answerNextMessageBox("recoverDialog", QMessageBox::No, &seen);
+    seen = 0;
+    test::answerNextMessageBox("recoverDialog", QMessageBox::No, &seen);
     auto declined = openPage(otherObj_);
-    QVERIFY(test::waitUntil([&] { return seen; }, 5000));
+    QVERIFY(test::waitUntil([&] { return seen > 0; }, 5000));
     QCOMPARE(declined->document()->points().presentCount(), 0);
     QVERIFY(!hasRecoverableAutosave(ljson));
   }

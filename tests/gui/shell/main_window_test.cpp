@@ -60,29 +60,6 @@ class RecordingPage : public Page {
   Project* project_ = nullptr;
 };
 
-// Presses `button` in the next visible message box named `objectName`; *seen counts them.
-void answerNextDialog(const QString& objectName, QMessageBox::StandardButton button, int* seen) {
-  auto* poll = new QTimer(qApp);
-  poll->setInterval(20);
-  QObject::connect(poll, &QTimer::timeout, poll, [poll, objectName, button, seen] {
-    for (QWidget* widget : QApplication::topLevelWidgets()) {
-      auto* box = qobject_cast<QMessageBox*>(widget);
-      if (box != nullptr && box->objectName() == objectName && box->isVisible()) {
-        ++*seen;
-        box->button(button)->click();
-        poll->stop();
-        poll->deleteLater();
-        return;
-      }
-    }
-  });
-  poll->start();
-  QTimer::singleShot(10000, poll, [poll] {
-    poll->stop();
-    poll->deleteLater();
-  });
-}
-
 }  // namespace
 
 class MainWindowTest : public QObject {
@@ -179,20 +156,20 @@ class MainWindowTest : public QObject {
     first_->unsaved = true;
     int asked = 0;
 
-    answerNextDialog("unsavedChangesDialog", QMessageBox::Cancel, &asked);
+    test::answerNextMessageBox("unsavedChangesDialog", QMessageBox::Cancel, &asked);
     QVERIFY(!window_->close());
     QCOMPARE(asked, 1);
     QVERIFY(window_->isVisible());
     QCOMPARE(first_->saveCalls, 0);
 
     first_->saveSucceeds = false;  // a failed save keeps the window open too
-    answerNextDialog("unsavedChangesDialog", QMessageBox::Save, &asked);
+    test::answerNextMessageBox("unsavedChangesDialog", QMessageBox::Save, &asked);
     QVERIFY(!window_->close());
     QCOMPARE(asked, 2);
     QCOMPARE(first_->saveCalls, 1);
 
     first_->saveSucceeds = true;
-    answerNextDialog("unsavedChangesDialog", QMessageBox::Save, &asked);
+    test::answerNextMessageBox("unsavedChangesDialog", QMessageBox::Save, &asked);
     QVERIFY(window_->close());
     QCOMPARE(asked, 3);
     QCOMPARE(first_->saveCalls, 2);
@@ -200,7 +177,7 @@ class MainWindowTest : public QObject {
 
     window_->show();
     first_->unsaved = true;
-    answerNextDialog("unsavedChangesDialog", QMessageBox::Discard, &asked);
+    test::answerNextMessageBox("unsavedChangesDialog", QMessageBox::Discard, &asked);
     QVERIFY(window_->closeProject());
     QCOMPARE(asked, 4);
     QCOMPARE(first_->saveCalls, 2);
@@ -212,11 +189,11 @@ class MainWindowTest : public QObject {
     QVERIFY(window_->openProject(toQString(temp_.path() / "busy")));
     second_->busy = true;
     int asked = 0;
-    answerNextDialog("busyDialog", QMessageBox::No, &asked);
+    test::answerNextMessageBox("busyDialog", QMessageBox::No, &asked);
     QVERIFY(!window_->closeProject());
     QCOMPARE(asked, 1);
     QVERIFY(window_->session().isOpen());
-    answerNextDialog("busyDialog", QMessageBox::Yes, &asked);
+    test::answerNextMessageBox("busyDialog", QMessageBox::Yes, &asked);
     QVERIFY(window_->closeProject());
     QCOMPARE(asked, 2);
     QCOMPARE(second_->project(), nullptr);

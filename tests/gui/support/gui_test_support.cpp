@@ -1,5 +1,6 @@
 #include "tests/gui/support/gui_test_support.hpp"
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QCoreApplication>
 #include <QMessageBox>
@@ -44,30 +45,47 @@ bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
   return done();
 }
 
-void expectErrorDialog(QString* message, int timeoutMs) {
+void onNextMessageBox(const QString& objectName, std::function<void(QMessageBox*)> action,
+                      int timeoutMs) {
   auto* poll = new QTimer(qApp);
-  auto* clock = new QElapsedTimer();
-  clock->start();
   poll->setInterval(20);
-  QObject::connect(poll, &QTimer::timeout, poll, [poll, clock, message, timeoutMs] {
+  QObject::connect(poll, &QTimer::timeout, poll, [poll, objectName, action = std::move(action)] {
     for (QWidget* widget : QApplication::topLevelWidgets()) {
       auto* box = qobject_cast<QMessageBox*>(widget);
-      if (box != nullptr && box->objectName() == "errorDialog" && box->isVisible()) {
-        if (message != nullptr) *message = box->informativeText();
-        box->accept();
+      if (box != nullptr && box->objectName() == objectName && box->isVisible()) {
         poll->stop();
         poll->deleteLater();
-        delete clock;
+        action(box);
         return;
       }
     }
-    if (clock->elapsed() > timeoutMs) {
-      poll->stop();
-      poll->deleteLater();
-      delete clock;
-    }
   });
   poll->start();
+  QTimer::singleShot(timeoutMs, poll, [poll] {
+    poll->stop();
+    poll->deleteLater();
+  });
+}
+
+void answerNextMessageBox(const QString& objectName, QMessageBox::StandardButton button, int* seen,
+                          int timeoutMs) {
+  onNextMessageBox(
+      objectName,
+      [button, seen](QMessageBox* box) {
+        if (seen != nullptr) ++*seen;
+        box->button(button)->click();
+      },
+      timeoutMs);
+}
+
+void expectErrorDialog(QString* message, int timeoutMs) {
+  onNextMessageBox(
+      "errorDialog",
+      [message](QMessageBox* box) {
+        if (message != nullptr) *message = box->informativeText();
+        box->accept();
+      },
+      timeoutMs);
 }
 
 std::filesystem::path fixturePath(const std::string& relative) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QElapsedTimer>
+#include <QMessageBox>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -33,6 +34,15 @@ class StallWatchdog : public QObject {
 
 // Runs the event loop until done() is true or timeoutMs passes; returns done().
 bool waitUntil(const std::function<bool()>& done, int timeoutMs);
+
+// Arms a poll (every 20 ms, until timeoutMs) that calls action on the next visible message box
+// whose object name is objectName: how tests answer the modal dialogs the pages open.
+void onNextMessageBox(const QString& objectName, std::function<void(QMessageBox*)> action,
+                      int timeoutMs = 10000);
+
+// Presses `button` in the next visible message box named `objectName`; ++*seen when it does.
+void answerNextMessageBox(const QString& objectName, QMessageBox::StandardButton button, int* seen,
+                          int timeoutMs = 10000);
 
 // Arms a check that closes the next modal error dialog (object name "errorDialog") and stores its
 // informative text in *message. Call before the action that should fail.
