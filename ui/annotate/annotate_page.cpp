@@ -281,6 +281,8 @@ void AnnotatePage::setProject(Project* project) {
   readManifest();
   loadProjectModel();
   updateState();
+  // Start on the manifest's first scan (loaded on the worker) unless one is open already.
+  if (!loaded_ && manifestScanCount() > 0) openManifestScan(0);
 }
 
 void AnnotatePage::readManifest() {

@@ -266,6 +266,11 @@ void TrackPage::setProject(Project* project) {
   fillProjectLists();
   if (project_ && !project_->models.empty() && modelPath_.empty())
     openModel(project_->models.front());
+  // A project's first video is what the user opens first anyway (the demo's test sequence).
+  if (project_ && !project_->videos.empty() && session_.video().path.empty() &&
+      fs::exists(project_->videos.front())) {
+    openVideo(project_->videos.front());
+  }
 }
 
 void TrackPage::fillProjectLists() {
