@@ -1,4 +1,5 @@
-# Debian package of the clm3d command line, its render module and resources (cpack -G DEB).
+# Debian package of the clm3d command line, clm3d-studio (with its desktop entry), the render
+# module and resources (cpack -G DEB); dependencies come from the binaries (SHLIBDEPS).
 set(CPACK_PACKAGE_NAME "clm3d")
 set(CPACK_PACKAGE_VENDOR "clm3d developers")
 set(CPACK_PACKAGE_CONTACT "clm3d developers <clm3d@localhost>")
