@@ -62,13 +62,19 @@ Project loadProject(const fs::path& folderOrFile) {
     throw InputError(fileMessage(
         file, "no clm3d project here (" + std::string(Project::kFileName) + " is missing)"));
   }
+  const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  return parseProject(readTextFile(file), folder, file);
+}
+
+Project parseProject(std::string_view text, const fs::path& folder, const fs::path& file) {
   json doc;
   try {
-    doc = json::parse(readTextFile(file));
+    doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw InputError(fileMessage(file, std::string("not valid JSON: ") + e.what()));
   }
-  if (!doc.is_object() || doc.value("format", std::string()) != kFormat) {
+  if (!doc.is_object() || !doc.contains("format") || !doc.at("format").is_string() ||
+      doc.at("format").get<std::string>() != kFormat) {
     throw InputError(
         fileMessage(file, "not a clm3d project (\"format\" must be \"clm3d-project\")"));
   }
@@ -78,7 +84,7 @@ Project loadProject(const fs::path& folderOrFile) {
                                            std::to_string(kVersion) + ")"));
   }
   Project project;
-  project.folder = normalised(file.parent_path().empty() ? fs::path(".") : file.parent_path());
+  project.folder = normalised(folder);
   try {
     project.name = doc.value("name", project.folder.filename().string());
     const std::string manifest = doc.value("manifest", std::string());

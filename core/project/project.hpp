@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace clm3d {
@@ -32,6 +33,11 @@ struct Project {
 // Throws InputError naming the file for a missing file, bad JSON, a wrong format tag or version,
 // or a field of the wrong type.
 Project loadProject(const std::filesystem::path& folderOrFile);
+
+// The same from the file's text: `folder` is where the file lies (paths are resolved against it)
+// and `file` names it in error messages.
+Project parseProject(std::string_view text, const std::filesystem::path& folder,
+                     const std::filesystem::path& file);
 
 // Writes project.file() atomically, creating the folder if needed; paths inside the folder are
 // stored relative to it.
