@@ -70,7 +70,7 @@ Project parseProject(std::string_view text, const fs::path& folder, const fs::pa
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // also out_of_range: a number too large for a double
     throw InputError(fileMessage(file, std::string("not valid JSON: ") + e.what()));
   }
   if (!doc.is_object() || !doc.contains("format") || !doc.at("format").is_string() ||

@@ -69,6 +69,8 @@ TEST(Project, BrokenFilesAreClearErrorsNamingTheFile) {
   EXPECT_NE(errorOf(dir.path()).find(file.filename().string()), std::string::npos);
   writeText(file, "{\"format\": \"something\", \"version\": 1}");
   EXPECT_NE(errorOf(file).find("not a clm3d project"), std::string::npos);
+  writeText(file, "{\"format\": \"clm3d-project\", \"version\": 511e4444444444444444444}");
+  EXPECT_NE(errorOf(file).find("not valid JSON"), std::string::npos);  // found by fuzz_project
   writeText(file, "{\"format\": 3, \"version\": 1}");
   EXPECT_NE(errorOf(file).find("not a clm3d project"), std::string::npos);
   writeText(file, "{\"format\": \"clm3d-project\", \"version\": 7}");
