@@ -102,15 +102,17 @@ std::string fixed(double v, int decimals) {
   return ec == std::errc() ? std::string(buffer, ptr) : std::string("n/a");
 }
 
-std::string percent(double share) {
-  return std::isfinite(share) ? fixed(100.0 * share, 1) + "%" : std::string("n/a");
-}
+}  // namespace
 
-std::string value(double v) {
+std::string formatErrorValue(double v) {
   return std::isfinite(v) ? fixed(v, 4) : std::string("n/a");
 }
 
-std::string pValue(double p) {
+std::string formatShare(double share) {
+  return std::isfinite(share) ? fixed(100.0 * share, 1) + "%" : std::string("n/a");
+}
+
+std::string formatPValue(double p) {
   if (!std::isfinite(p)) return "n/a";
   if (p >= 1e-4) return fixed(p, 4);
   char buffer[64];
@@ -119,7 +121,26 @@ std::string pValue(double p) {
   return ec == std::errc() ? std::string(buffer, ptr) : std::string("n/a");
 }
 
-}  // namespace
+std::string formatComparison(const EvaluationReport& report) {
+  const auto& c = report.comparison;
+  const auto verdict = [](double p) {
+    return p < 0.05 ? " (means differ at the 5% level)"
+                    : " (no significant difference at the 5% level)";
+  };
+  if (c.kind == Comparison::Kind::Welch) {
+    return "Welch's t-test on frame errors, " + report.sequences[0].label + " vs " +
+           report.sequences[1].label + ": t = " + fixed(c.welch.t, 3) +
+           ", df = " + fixed(c.welch.df, 1) + ", p = " + formatPValue(c.welch.p) +
+           verdict(c.welch.p);
+  }
+  if (c.kind == Comparison::Kind::Anova) {
+    return "one-way ANOVA on frame errors: F(" + fixed(c.anova.df1, 0) + ", " +
+           fixed(c.anova.df2, 0) + ") = " + fixed(c.anova.f, 3) +
+           ", p = " + formatPValue(c.anova.p) + verdict(c.anova.p);
+  }
+  if (!c.note.empty()) return "no significance test: " + c.note;
+  return {};
+}
 
 Comparison compareSequences(const std::vector<SequenceEvaluation>& sequences) {
   Comparison result;
@@ -205,30 +226,19 @@ std::string formatReportText(const EvaluationReport& report) {
       out += " (" + std::to_string(s.extraPredictionRows) + " rows not in the truth ignored)";
     }
     out += "\n";
-    out += "  error: mean " + value(s.mean) + ", median " + value(s.median) + ", SD " +
-           value(s.sd) + ", min " + value(s.min) + ", max " + value(s.max) + "\n";
-    out += "  convergence rate " + percent(s.convergenceRate) + ", points within " +
-           fixed(report.options.threshold, 2) + ": " + percent(s.withinThreshold) + " (" +
+    out += "  error: mean " + formatErrorValue(s.mean) + ", median " + formatErrorValue(s.median) +
+           ", SD " + formatErrorValue(s.sd) + ", min " + formatErrorValue(s.min) + ", max " +
+           formatErrorValue(s.max) + "\n";
+    out += "  convergence rate " + formatShare(s.convergenceRate) + ", points within " +
+           fixed(report.options.threshold, 2) + ": " + formatShare(s.withinThreshold) + " (" +
            std::to_string(s.foundPoints) + "/" + std::to_string(s.truePoints) + ")\n";
     out += "  regions (mean point error):";
-    for (const auto& region : s.regions) out += " " + region.name + " " + value(region.mean);
-    out += ", all " + value(s.meanPointError) + "\n";
+    for (const auto& region : s.regions)
+      out += " " + region.name + " " + formatErrorValue(region.mean);
+    out += ", all " + formatErrorValue(s.meanPointError) + "\n";
   }
-  const auto& c = report.comparison;
-  if (c.kind == Comparison::Kind::Welch) {
-    out += "\nWelch's t-test on frame errors, " + report.sequences[0].label + " vs " +
-           report.sequences[1].label + ": t = " + fixed(c.welch.t, 3) +
-           ", df = " + fixed(c.welch.df, 1) + ", p = " + pValue(c.welch.p) +
-           (c.welch.p < 0.05 ? " (means differ at the 5% level)\n"
-                             : " (no significant difference at the 5% level)\n");
-  } else if (c.kind == Comparison::Kind::Anova) {
-    out += "\none-way ANOVA on frame errors: F(" + fixed(c.anova.df1, 0) + ", " +
-           fixed(c.anova.df2, 0) + ") = " + fixed(c.anova.f, 3) + ", p = " + pValue(c.anova.p) +
-           (c.anova.p < 0.05 ? " (means differ at the 5% level)\n"
-                             : " (no significant difference at the 5% level)\n");
-  } else if (!c.note.empty()) {
-    out += "\nno significance test: " + c.note + "\n";
-  }
+  const std::string comparison = formatComparison(report);
+  if (!comparison.empty()) out += "\n" + comparison + "\n";
   return out;
 }
 

@@ -51,6 +51,16 @@ std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
 
+// The numbers of the text report as strings (locale-independent), for every view that shows
+// them (the studio's table), so a figure reads the same everywhere: errors with four decimals,
+// shares as percentages with one, p-values fixed or scientific; "n/a" when not finite.
+std::string formatErrorValue(double value);
+std::string formatShare(double share);
+std::string formatPValue(double p);
+// The report's significance-test line (Welch's t-test, one-way ANOVA, or why there is none),
+// without a line break; empty for a single prediction.
+std::string formatComparison(const EvaluationReport& report);
+
 // A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
 // threshold, per-region means; then the test.
 std::string formatReportText(const EvaluationReport& report);

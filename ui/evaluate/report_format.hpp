@@ -1,6 +1,5 @@
-// The evaluate page's numbers as text, with the digits `clm3d eval` prints (errors with four
-// decimals, shares as percentages with one, p-values fixed or scientific), so a figure read off
-// the page and one read off the terminal are the same string.
+// The evaluate page's numbers as QStrings: thin wrappers of core/eval's formatters, so a figure
+// read off the page and one read off `clm3d eval` are the same string.
 #pragma once
 
 #include <QString>
