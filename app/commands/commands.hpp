@@ -17,5 +17,7 @@ void addEvalCommand(CLI::App& root);
 void addFitCommand(CLI::App& root);
 void addTrackCommand(CLI::App& root);
 void addTruthCommand(CLI::App& root);
+void addEvalPointsCommand(CLI::App& root);
+void addPlotCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

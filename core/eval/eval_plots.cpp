@@ -5,6 +5,7 @@
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 
@@ -416,6 +417,71 @@ cv::Mat plotRegionErrors(const std::vector<SequenceEvaluation>& sequences) {
       const cv::Point b = chart.pixel(left + barWidth, 0.0);
       const cv::Rect bar(cv::Point(a.x + 1, a.y), cv::Point(std::max(a.x + 2, b.x - 1), b.y));
       cv::rectangle(chart.canvas(), bar & chart.area(), seriesColour(i), cv::FILLED);
+    }
+  }
+  chart.finish();
+  return chart.canvas();
+}
+
+cv::Mat plotLines(const std::vector<LineSeries>& series, const LinePlotOptions& options) {
+  double xMin = 0.0, xMax = 0.0, yMin = 0.0, yMax = 0.0;
+  bool any = false;
+  for (const auto& line : series) {
+    for (const auto& p : line.points) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+        throw std::invalid_argument("series '" + line.label + "' has a value that is not finite");
+      }
+      if (options.logX && !(p.x > 0.0)) {
+        throw std::invalid_argument("series '" + line.label + "' has x <= 0 on a log axis");
+      }
+      const double x = options.logX ? std::log10(p.x) : p.x;
+      xMin = any ? std::min(xMin, x) : x;
+      xMax = any ? std::max(xMax, x) : x;
+      yMin = any ? std::min(yMin, p.y) : p.y;
+      yMax = any ? std::max(yMax, p.y) : p.y;
+      any = true;
+    }
+  }
+  if (!any) throw std::invalid_argument("nothing to plot: no series has a point");
+
+  Axis x;
+  if (options.logX) {
+    // Ticks at 1, 2, 5 x 10^k inside the range, labelled with the value itself.
+    const double pad = xMax > xMin ? 0.04 * (xMax - xMin) : 0.1;
+    x = Axis{xMin - pad, xMax + pad, {}, options.xLabel};
+    const double lo = std::floor(x.min);
+    const double hi = std::ceil(x.max);
+    for (double decade = lo; decade <= hi + 1e-9; decade += 1.0) {
+      for (const double m : {1.0, 2.0, 5.0}) {
+        const double v = std::log10(m) + decade;
+        if (v < x.min - 1e-9 || v > x.max + 1e-9) continue;
+        const double value = m * std::pow(10.0, decade);
+        x.ticks.push_back({v, fixed(value, value >= 1.0 ? 0 : static_cast<int>(-decade))});
+      }
+    }
+  } else {
+    const double pad = xMax > xMin ? 0.03 * (xMax - xMin) : 0.5;
+    x = niceAxis(xMin - pad, xMax + pad, options.xLabel, 8);
+  }
+  const double top = niceCeil(std::max(std::abs(yMax), 1e-9) * 1.05);
+  const double bottom = options.yFromZero ? std::min(0.0, yMin) : yMin - 0.05 * (yMax - yMin);
+  Chart chart(options.title, x, niceAxis(bottom, std::max(top, bottom + 1e-9), options.yLabel, 6),
+              [&] {
+                std::vector<LegendEntry> legend;
+                for (std::size_t i = 0; i < series.size(); ++i) {
+                  legend.push_back({series[i].label, seriesColour(i)});
+                }
+                return legend;
+              }());
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    std::vector<cv::Point2d> points;
+    for (const auto& p : series[i].points) {
+      points.push_back({options.logX ? std::log10(p.x) : p.x, p.y});
+    }
+    if (points.size() > 1) chart.polyline(points, seriesColour(i));
+    for (const auto& p : points) {
+      cv::circle(chart.canvas(), chart.pixel(p.x, p.y), 5, seriesColour(i), cv::FILLED,
+                 cv::LINE_AA);
     }
   }
   chart.finish();

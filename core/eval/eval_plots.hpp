@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
+#include <string>
 #include <vector>
 
 #include "core/eval/eval_report.hpp"
@@ -25,6 +27,23 @@ cv::Mat plotErrorPerFrame(const std::vector<SequenceEvaluation>& sequences,
 
 // Grouped bars: mean point error per scheme region and over all points, one bar per prediction.
 cv::Mat plotRegionErrors(const std::vector<SequenceEvaluation>& sequences);
+
+// A generic line chart (the training-data study's error against number of identities): one line
+// with a dot at every point per series, in series order, points joined in the order given.
+struct LineSeries {
+  std::string label;
+  std::vector<cv::Point2d> points;
+};
+struct LinePlotOptions {
+  std::string title;
+  std::string xLabel;
+  std::string yLabel;
+  bool logX = false;      // logarithmic x axis (every x must then be > 0)
+  bool yFromZero = true;  // the y axis starts at 0 (else at the data's minimum)
+};
+// Throws std::invalid_argument if no series has a point, or (logX) an x is <= 0, or a value is
+// not finite.
+cv::Mat plotLines(const std::vector<LineSeries>& series, const LinePlotOptions& options);
 
 // Writes cdf.png, error-per-frame.png and regions.png into folder (created if needed) and returns
 // their paths. InputError naming the folder or file if it cannot be written.
