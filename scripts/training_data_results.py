@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Collects the training-data study's evaluations into tables (scripts/training-data-study.sh).
+
+Usage: training_data_results.py EVAL_DIR PHOTO_DIR RESULTS.csv PHOTOS.csv < MODELS
+
+MODELS: one line per model, "NAME HELD_OUT IDENTITIES AUGMENTATION [TRAIN_SECONDS]". Reads
+EVAL_DIR/NAME--HELD-{left,right}.json (clm3d eval --json) and EVAL_DIR/NAME--PHOTO--START.json
+(clm3d eval-points --json; PHOTO from PHOTO_DIR/*-truth25.pts; a missing file = the fit failed).
+RESULTS.csv: one row per model x test (two sequences, photos from each start); PHOTOS.csv: one row
+per model x photo x start. Standard library only.
+"""
+import glob
+import json
+import os
+import statistics
+import sys
+
+
+def fmt(value):
+    return "" if value is None else f"{value:.4f}"
+
+
+def write(path, rows):
+    with open(path + ".tmp", "w") as f:
+        f.write("\n".join(rows) + "\n")
+    os.replace(path + ".tmp", path)
+
+
+def main():
+    if len(sys.argv) != 5:
+        sys.exit(__doc__)
+    evals, photo_dir, results_csv, photos_csv = sys.argv[1:]
+    photos = sorted(os.path.basename(t)[: -len("-truth25.pts")]
+                    for t in glob.glob(f"{photo_dir}/*-truth25.pts"))
+    results = ["model,held_out,identities,augmentation,train_seconds,kind,test,error_mean,"
+               "error_median,convergence,scored"]
+    per_photo = ["model,held_out,identities,augmentation,photo,start,error,max_error,found,scored"]
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        name, held, n, aug, *seconds = line.split()
+        head = f"{name},{held},{n},{aug},{seconds[0] if seconds else ''}"
+        for side in ("left", "right"):
+            path = f"{evals}/{name}--{held}-{side}.json"
+            if os.path.exists(path):
+                p = json.load(open(path))["predictions"][0]
+                results.append(f"{head},sequence,{held}-{side},{fmt(p['error']['mean'])},"
+                               f"{fmt(p['error']['median'])},{fmt(p['convergence_rate'])},"
+                               f"{p['frames']['scored']}")
+        for start in ("detector", "start5"):
+            errors = []
+            for photo in photos:
+                path = f"{evals}/{name}--{photo}--{start}.json"
+                if not os.path.exists(path):
+                    per_photo.append(f"{name},{held},{n},{aug},{photo},{start},,,,")
+                    continue
+                r = json.load(open(path))["predictions"][0]
+                errors.append(r["error"])
+                per_photo.append(f"{name},{held},{n},{aug},{photo},{start},{fmt(r['error'])},"
+                                 f"{fmt(r['max_error'])},{r['found_points']},{r['scored_points']}")
+            if photos:
+                ok = [e for e in errors if e is not None]
+                # convergence: photos fitted with error < 0.18 over all photos (a failed fit counts
+                # as not converged); mean and median over the fitted photos.
+                results.append(f"{head},photos,photos-{start},"
+                               f"{fmt(statistics.mean(ok)) if ok else ''},"
+                               f"{fmt(statistics.median(ok)) if ok else ''},"
+                               f"{fmt(sum(e < 0.18 for e in ok) / len(photos))},{len(ok)}")
+    write(results_csv, results)
+    write(photos_csv, per_photo)
+
+
+if __name__ == "__main__":
+    main()
