@@ -235,6 +235,62 @@ IctSource parseIct(Fields& f) {
   return source;
 }
 
+MakeHumanSource parseMakeHuman(Fields& f) {
+  MakeHumanSource source;
+  source.root = f.path("root", /*directoryAllowed=*/true);
+  if (!fs::is_directory(source.root)) f.fail(f.name("root"), "not a folder: " + source.root.string());
+  for (const char* part : {"base/base.obj", "skins", "eyes", "targets"}) {
+    if (!fs::exists(source.root / part)) {
+      f.fail(f.name("root"), "not a MakeHuman data folder (no " + std::string(part) + " in " +
+                                 source.root.string() + ")");
+    }
+  }
+  source.vertices = f.path("vertices");
+  source.identities = static_cast<int>(f.integer("identities", source.identities, 1, 100000));
+  source.skins = f.strings("skins", {});
+  source.eyes = f.strings("eyes", {});
+  auto checkStems = [&](const std::string& key, const std::vector<std::string>& stems,
+                        const fs::path& folder) {
+    for (std::size_t i = 0; i < stems.size(); ++i) {
+      if (!fs::is_regular_file(folder / (stems[i] + ".png"))) {
+        f.fail(f.name(key) + "[" + std::to_string(i) + "]",
+               "no such texture: " + (folder / (stems[i] + ".png")).string());
+      }
+    }
+  };
+  checkStems("skins", source.skins, source.root / "skins");
+  checkStems("eyes", source.eyes, source.root / "eyes");
+  source.expressionUnits = f.string("expression_units", source.expressionUnits);
+  checkNameSegment(f, "expression_units", source.expressionUnits);
+  const fs::path units = source.root / "targets" / "expression" / "units" / source.expressionUnits;
+  if (!fs::is_directory(units)) f.fail(f.name("expression_units"), "no folder " + units.string());
+  source.expressions = f.strings("expressions", {"neutral"});
+  if (source.expressions.empty()) f.fail(f.name("expressions"), "must not be empty");
+  for (std::size_t i = 0; i < source.expressions.size(); ++i) {
+    const std::string& expression = source.expressions[i];
+    const std::string item = f.name("expressions") + "[" + std::to_string(i) + "]";
+    if (expression.find('/') != std::string::npos) f.fail(item, "must not contain '/'");
+    if (expression == "neutral") continue;
+    std::size_t begin = 0;
+    for (;;) {
+      const std::size_t plus = expression.find('+', begin);
+      const std::string unit = expression.substr(begin, plus == std::string::npos ? plus : plus - begin);
+      if (unit.empty() || !fs::is_regular_file(units / (unit + ".target"))) {
+        f.fail(item, "expected \"neutral\" or expression targets of " + units.string() +
+                         " joined by '+', but '" + unit + "' is not one");
+      }
+      if (plus == std::string::npos) break;
+      begin = plus + 1;
+    }
+  }
+  source.identityWeight = f.number("identity_weight", source.identityWeight, 0.0, 1.0);
+  source.asymmetry = f.number("asymmetry", source.asymmetry, 0.0, 1.0);
+  source.expressionWeight = f.number("expression_weight", source.expressionWeight, 0.0, 1.0);
+  source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 16, 8192));
+  source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
+  return source;
+}
+
 }  // namespace
 
 std::string scanSubjectId(const ScanSource& scan) {
@@ -243,6 +299,10 @@ std::string scanSubjectId(const ScanSource& scan) {
 
 std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression) {
   return "procedural/" + std::to_string(seed) + "/" + expression;
+}
+
+std::string makehumanSubjectId(std::uint64_t seed, const std::string& expression) {
+  return "makehuman/" + std::to_string(seed) + "/" + expression;
 }
 
 DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
@@ -312,10 +372,28 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     manifest.ict.push_back(parseIct(f));
     f.rejectUnknown();
   }
+  const json& makehuman = arrayField(top, "makehuman");
+  for (std::size_t i = 0; i < makehuman.size(); ++i) {
+    Fields f(makehuman[i], "makehuman[" + std::to_string(i) + "]", file, folder);
+    manifest.makehuman.push_back(parseMakeHuman(f));
+    f.rejectUnknown();
+    if (schemeObject.name() != "thesis25") {
+      f.fail(f.name("vertices"), "MakeHuman landmark tables are thesis25 but the scheme is '" +
+                                     schemeObject.name() + "'");
+    }
+    const MakeHumanSource& source = manifest.makehuman.back();
+    for (int k = 0; k < source.identities; ++k) {
+      for (const auto& expression : source.expressions) {
+        addId(makehumanSubjectId(source.seedOffset + static_cast<std::uint64_t>(k), expression),
+              f.name("seed_offset"));
+      }
+    }
+  }
   top.rejectUnknown();
 
-  if (manifest.scans.empty() && manifest.procedural.empty() && manifest.ict.empty()) {
-    top.fail("scans/procedural/ict_facekit", "the manifest lists no data");
+  if (manifest.scans.empty() && manifest.procedural.empty() && manifest.ict.empty() &&
+      manifest.makehuman.empty()) {
+    top.fail("scans/procedural/ict_facekit/makehuman", "the manifest lists no data");
   }
   return manifest;
 }

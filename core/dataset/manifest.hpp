@@ -39,12 +39,30 @@ struct IctSource {
   std::uint64_t seedOffset = 0;          // added to the sampling seed
 };
 
+// Random MakeHuman identities (core/dataset/makehuman_head.hpp): each identity (seed
+// seedOffset + i) with each expression is one textured subject.
+struct MakeHumanSource {
+  std::filesystem::path root;      // the MakeHuman data folder (base/, skins/, eyes/, targets/)
+  std::filesystem::path vertices;  // thesis25_vertices.json: base-mesh vertex of each landmark
+  int identities = 10;
+  std::vector<std::string> skins;        // skin stems to draw from; empty = all
+  std::vector<std::string> eyes;         // eye texture stems; empty = all
+  std::vector<std::string> expressions;  // "neutral" or unit targets joined by '+'
+  std::string expressionUnits = "caucasian";
+  double identityWeight = 0.5;
+  double asymmetry = 0.1;
+  double expressionWeight = 0.8;
+  int textureSize = 1024;
+  std::uint64_t seedOffset = 0;
+};
+
 struct DatasetManifest {
   std::filesystem::path file;       // where it was read from (for messages)
   std::string scheme = "thesis25";  // built-in name or an absolute path to a scheme JSON
   std::vector<ScanSource> scans;
   std::vector<ProceduralSource> procedural;
   std::vector<IctSource> ict;
+  std::vector<MakeHumanSource> makehuman;
   std::string name;  // for provenance; defaults to the file's stem
 };
 
@@ -52,6 +70,8 @@ struct DatasetManifest {
 // "procedural/SEED/EXPRESSION" for a procedural head. Unique within a manifest.
 std::string scanSubjectId(const ScanSource& scan);
 std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression);
+// "makehuman/SEED/EXPRESSION" for a MakeHuman identity.
+std::string makehumanSubjectId(std::uint64_t seed, const std::string& expression);
 
 // Reads and validates a manifest: every field's type and range, that the referenced files exist,
 // expression presets and seed lists. Paths relative to the manifest's folder become absolute.

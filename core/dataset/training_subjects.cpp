@@ -9,6 +9,8 @@
 
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
+#include "core/dataset/ict_facekit.hpp"
+#include "core/dataset/makehuman_head.hpp"
 #include "core/dataset/model_frame.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
@@ -49,6 +51,24 @@ TexturedSubject makeProcedural(std::uint64_t seed, const std::string& expression
   subject.expression = expression;
   subject.mesh = std::move(head.mesh);
   subject.landmarks = std::move(head.landmarks);
+  return subject;
+}
+
+TexturedSubject makeMakeHuman(const MakeHumanAssets& assets, std::uint64_t seed,
+                              const std::string& expression, const Scheme& scheme,
+                              const std::filesystem::path& vertexTable) {
+  MakeHumanAssets::Head head = assets.generate(seed, expression);
+  TexturedSubject subject;
+  subject.id = makehumanSubjectId(seed, expression);
+  subject.subject = "makehuman/" + std::to_string(seed);
+  subject.expression = expression;
+  std::string why;
+  const auto frame = modelFrame(head.landmarks, scheme, Eigen::Vector3d::UnitY(),
+                                Eigen::Vector3d::UnitZ(), /*levelEyes=*/true, why);
+  if (!frame) throwInputError(vertexTable, why);
+  subject.mesh = std::move(head.mesh);
+  transformMesh(subject.mesh, frame->rotation, -(frame->rotation * frame->origin));
+  subject.landmarks = applyFrame(*frame, head.landmarks);
   return subject;
 }
 
@@ -113,6 +133,29 @@ std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifes
       for (const std::string& expression : source.expressions) {
         jobs.emplace_back(
             [seed, &expression, &source] { return makeProcedural(seed, expression, source); });
+      }
+    }
+  }
+  // MakeHuman: each source's base mesh, targets and eye mesh are read once and shared by its jobs.
+  for (const MakeHumanSource& source : manifest.makehuman) {
+    MakeHumanOptions options;
+    options.skins = source.skins;
+    options.eyes = source.eyes;
+    options.expressions = source.expressions;
+    options.expressionUnits = source.expressionUnits;
+    options.identityWeight = source.identityWeight;
+    options.asymmetry = source.asymmetry;
+    options.expressionWeight = source.expressionWeight;
+    options.textureSize = source.textureSize;
+    const std::shared_ptr<const MakeHumanAssets> assets = MakeHumanAssets::load(
+        source.root, readLandmarkVertexTable(source.vertices, scheme.name(), scheme.size()),
+        options, {}, cancel);
+    for (int k = 0; k < source.identities; ++k) {
+      const std::uint64_t seed = source.seedOffset + static_cast<std::uint64_t>(k);
+      for (const std::string& expression : source.expressions) {
+        jobs.emplace_back([assets, seed, &expression, &scheme, &source] {
+          return makeMakeHuman(*assets, seed, expression, scheme, source.vertices);
+        });
       }
     }
   }
