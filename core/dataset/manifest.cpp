@@ -168,6 +168,7 @@ ScanSource parseScan(Fields& f) {
   if (up->dot(*front) != 0.0) f.fail(f.name("front"), "must be perpendicular to up");
   scan.levelEyes = f.boolean("level_eyes", scan.levelEyes);
   return scan;
+  scan.scale = f.number("scale", scan.scale, 1e-6, 1e6);
 }
 
 ProceduralSource parseProcedural(Fields& f) {

@@ -6,6 +6,28 @@
 
 namespace clm3d {
 
+std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> eyeLevelPoints(
+    const LandmarkSet& thesis) {
+  // thesis25 indices (0-based): eye centres, outer and inner eye corners, subject's left first.
+  constexpr int kLeftCentre = 7, kRightCentre = 10;
+  constexpr int kLeftOuter = 1, kRightOuter = 2, kLeftInner = 8, kRightInner = 9;
+  const auto both = [&](int left, int right) { return thesis.has(left) && thesis.has(right); };
+  if (both(kLeftCentre, kRightCentre)) {
+    return std::pair{thesis.point(kLeftCentre), thesis.point(kRightCentre)};
+  }
+  if (both(kLeftOuter, kRightOuter) && both(kLeftInner, kRightInner)) {
+    return std::pair{0.5 * (thesis.point(kLeftOuter) + thesis.point(kLeftInner)),
+                     0.5 * (thesis.point(kRightOuter) + thesis.point(kRightInner))};
+  }
+  if (both(kLeftOuter, kRightOuter)) {
+    return std::pair{thesis.point(kLeftOuter), thesis.point(kRightOuter)};
+  }
+  if (both(kLeftInner, kRightInner)) {
+    return std::pair{thesis.point(kLeftInner), thesis.point(kRightInner)};
+  }
+  return std::nullopt;
+}
+
 std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme& scheme,
                                      const Eigen::Vector3d& up, const Eigen::Vector3d& front,
                                      bool levelEyes, std::string& why) {
@@ -32,15 +54,15 @@ std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme&
     why = "levelling on the eyes needs the thesis25 or ibug68 scheme (set level_eyes to false)";
     return std::nullopt;
   }
-  const auto [left, right] = Scheme::thesis25().normalisationPair();  // the eye centres
-  if (!thesis->has(left) || !thesis->has(right)) {
+  const auto eyes = eyeLevelPoints(*thesis);
+  if (!eyes) {
     why =
-        "the eye centres are missing, so the head cannot be levelled on them (set level_eyes to "
-        "false)";
+        "the eye centres and both pairs of eye corners are missing, so the head cannot be levelled "
+        "on the eyes (set level_eyes to false)";
     return std::nullopt;
   }
   try {
-    frame.rotation = eyeLevelRotation(thesis->point(left), thesis->point(right), up);
+    frame.rotation = eyeLevelRotation(eyes->first, eyes->second, up);
   } catch (const Error& e) {
     why = e.what();
     return std::nullopt;

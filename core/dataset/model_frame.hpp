@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/scheme.hpp"
@@ -17,6 +18,13 @@ struct ModelFrame {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // file coordinates of the new origin
   Eigen::Vector3d apply(const Eigen::Vector3d& p) const { return rotation * (p - origin); }
 };
+
+// The left and right points the head is levelled on, from thesis25-ordered landmarks: the eye
+// centres (thesis 8 and 11); when either is missing (a scan with closed eyes) the midpoints of
+// each eye's outer and inner corners, then the outer corners (2, 3), then the inner corners
+// (9, 10). nullopt when none of these pairs is complete.
+std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> eyeLevelPoints(
+    const LandmarkSet& thesis);
 
 // The frame for 3D landmarks of `scheme` (thesis25 or ibug68 give the eye centres and landmark 1;
 // for other schemes the origin is point 0 and levelling is not available). On failure returns

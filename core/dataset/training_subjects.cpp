@@ -29,12 +29,18 @@ TexturedSubject loadScan(const ScanSource& scan, const Scheme& scheme) {
   LandmarkSet landmarks = readLandmarks(scan.landmarks, &scheme);
   const auto up = axisFromName(scan.up);
   const auto front = axisFromName(scan.front);
+  if (scan.scale != 1.0 && landmarks.dims() == 3) {  // file units to mm before the frame
+    for (int i = 0; i < landmarks.size(); ++i) {
+      if (landmarks.has(i)) landmarks.set(i, Eigen::Vector3d(scan.scale * landmarks.point(i)));
+    }
+  }
   if (!up || !front) throw InputError("scan " + subject.id + ": bad up/front axis");
   std::string why;
   const auto frame = modelFrame(landmarks, scheme, *up, *front, scan.levelEyes, why);
   if (!frame) throwInputError(scan.landmarks, why);
   subject.mesh = loadTexturedMesh(scan.mesh);
-  transformMesh(subject.mesh, frame->rotation, -(frame->rotation * frame->origin));
+  // The scale rides on the rotation: transformMesh renormalises the normals.
+  transformMesh(subject.mesh, scan.scale * frame->rotation, -(frame->rotation * frame->origin));
   subject.landmarks = applyFrame(*frame, landmarks);
   return subject;
 }

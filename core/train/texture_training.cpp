@@ -11,6 +11,7 @@
 
 #include "core/common/error.hpp"
 #include "core/render/offscreen_renderer.hpp"
+#include "core/train/framing_landmarks.hpp"
 #include "core/train/training_sample.hpp"
 
 namespace clm3d {
@@ -29,6 +30,30 @@ int threadCount(const TrainSettings& settings, int jobs) {
   int threads = settings.threads > 0 ? settings.threads
                                      : static_cast<int>(std::thread::hardware_concurrency());
   return std::clamp(threads, 1, std::max(1, jobs));
+}
+
+// Replaces the patches of a landmark in the columns where its subject lacks it (sampled there at
+// an imputed or no position) by the mean of the columns that have it, so that a missing point
+// neither drags the patch mean towards a wrong appearance nor adds variance of its own.
+void fillMissingPatches(Eigen::MatrixXf& patches, int landmark, int pixels,
+                        const std::vector<std::vector<bool>>& subjectHas, int samplesPerView) {
+  const Eigen::Index row = Eigen::Index(landmark) * pixels;
+  const auto has = [&](Eigen::Index column) {
+    return subjectHas[static_cast<std::size_t>(column / samplesPerView)]
+                     [static_cast<std::size_t>(landmark)];
+  };
+  Eigen::VectorXf mean = Eigen::VectorXf::Zero(pixels);
+  int count = 0;
+  for (Eigen::Index c = 0; c < patches.cols(); ++c) {
+    if (!has(c)) continue;
+    mean += patches.block(row, c, pixels, 1);
+    ++count;
+  }
+  if (count == 0 || count == patches.cols()) return;
+  mean /= static_cast<float>(count);
+  for (Eigen::Index c = 0; c < patches.cols(); ++c) {
+    if (!has(c)) patches.block(row, c, pixels, 1) = mean;
+  }
 }
 
 PatchModel buildPatchModel(const ViewSamples& samples, const std::vector<int>& landmarks, int scale,
@@ -71,6 +96,17 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     }
   }
   const std::pair<int, int> eyes = scheme.normalisationPair();
+  // Framing needs the eye centres; a subject without them (closed eyes) is framed on imputed ones.
+  std::vector<const LandmarkSet*> allLandmarks;
+  std::vector<std::vector<bool>> subjectHas;
+  for (const TrainingSubject& subject : subjects) {
+    allLandmarks.push_back(subject.landmarks);
+    subjectHas.push_back(subject.landmarks->presentMask());
+  }
+  std::vector<LandmarkSet> framing;
+  for (std::size_t s = 0; s < subjects.size(); ++s) {
+    framing.push_back(framingLandmarks(allLandmarks, s, eyes, subjects[s].id));
+  }
 
   // Which views are rendered and which are mirrors of a rendered one.
   const std::vector<ViewCentre> views = settings.views();
@@ -125,8 +161,8 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
             if (cancel) cancel->throwIfCancelled();
             const SampleSpec spec = drawSample(settings, views[static_cast<std::size_t>(v)],
                                                settings.seed, subject, v, k);
-            const SamplePatches patches =
-                renderSample(renderer, *input.landmarks, eyes, spec, settings);
+            const SamplePatches patches = renderSample(
+                renderer, framing[static_cast<std::size_t>(subject)], eyes, spec, settings);
             const Eigen::Index column = Eigen::Index(subject) * samplesPerView + k;
             {
               std::lock_guard lock(*viewMutex[static_cast<std::size_t>(v)]);
@@ -137,8 +173,9 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
               }
               for (int i = 0; i < n; ++i) {
                 const auto li = static_cast<std::size_t>(i);
-                target.visibleCount[li] += patches.visible[li] ? 1 : 0;
-                target.presentCount[li] += input.landmarks->has(i) ? 1 : 0;
+                const bool present = input.landmarks->has(i);  // not imputed for framing
+                target.visibleCount[li] += present && patches.visible[li] ? 1 : 0;
+                target.presentCount[li] += present ? 1 : 0;
               }
             }
             const int finished = ++done;
@@ -164,7 +201,15 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
   for (int v : rendered) {
     if (cancel) cancel->throwIfCancelled();
     const auto vi = static_cast<std::size_t>(v);
-    const ViewSamples& c = collected[vi];
+    ViewSamples& c = collected[vi];
+    for (int i = 0; i < n; ++i) {
+      if (c.presentCount[static_cast<std::size_t>(i)] == columns) continue;
+      for (int s = 0; s < settings.scales; ++s) {
+        const auto level = static_cast<std::size_t>(s);
+        fillMissingPatches(c.grey[level], i, pixels, subjectHas, samplesPerView);
+        fillMissingPatches(c.alpha[level], i, pixels, subjectHas, samplesPerView);
+      }
+    }
     ViewModel& model = models[vi];
     model.pitchDeg = views[vi].pitchDeg;
     model.yawDeg = views[vi].yawDeg;
@@ -172,8 +217,12 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     std::vector<int> visibleLandmarks;
     for (int i = 0; i < n; ++i) {
       const auto li = static_cast<std::size_t>(i);
-      const double hidden = static_cast<double>(columns - c.visibleCount[li]) / columns;
-      const bool visible = c.presentCount[li] > 0 && hidden <= settings.hiddenShare;
+      // Hidden share among the samples that have the point: a point missing from some subjects
+      // (closed eyes) is judged by the renders of the subjects that have it.
+      const int present = c.presentCount[li];
+      const double hidden =
+          present > 0 ? static_cast<double>(present - c.visibleCount[li]) / present : 1.0;
+      const bool visible = present > 0 && hidden <= settings.hiddenShare;
       model.visible[li] = visible;
       if (visible) visibleLandmarks.push_back(i);
     }

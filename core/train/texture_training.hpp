@@ -26,7 +26,9 @@ struct TrainingSubject {
 // Per view of settings.views(), in that order. progress gets fractions in [0, 1] with stage
 // "rendering" then "pca". Deterministic for a given settings.seed whatever the thread count.
 // Throws Cancelled when the token is set (checked before every render), InputError for bad
-// subjects (no subjects, wrong landmark count, missing eye centres).
+// subjects (no subjects, wrong landmark count, eye centres missing and not imputable from the
+// other subjects). A missing landmark does not count as hidden; its patches in that subject's
+// samples are the mean of the other subjects' patches.
 std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& subjects,
                                           const Scheme& scheme, const TrainSettings& settings,
                                           const ProgressCallback& progress = {},
