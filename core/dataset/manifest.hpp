@@ -18,9 +18,9 @@ struct ScanSource {
   std::string subject, expression;        // expression defaults to "neutral"
   std::string up = "+y", front = "+z";    // the file's up and out-of-the-face axes
   bool levelEyes = true;                  // turn so that the eye centres are level (yaw/roll 0)
+  double scale = 1.0;  // file units to millimetres (mesh and landmarks are multiplied by it)
 };
 
-  double scale = 1.0;  // file units to millimetres (mesh and landmarks are multiplied by it)
 // Procedural heads (core/synth): every seed with every expression preset.
 struct ProceduralSource {
   std::vector<std::uint64_t> seeds;
