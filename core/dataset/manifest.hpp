@@ -57,12 +57,27 @@ struct MakeHumanSource {
   std::uint64_t seedOffset = 0;
 };
 
+// Textured ICT-FaceKit heads: the neutral registered onto each listed scan, the scan's texture
+// baked into ICT's UV layout, worn by random identities and expressions (docs/texture-transfer.md).
+struct IctTexturedSource {
+  std::filesystem::path model;     // the .tar.xz (any archive libarchive reads) or a folder of OBJs
+  std::filesystem::path vertices;  // thesis25_vertices.json: the vertex index of each landmark
+  std::vector<std::string> textureFrom;  // `subject`s of the manifest's scans whose skin is baked
+  int identities = 10;                   // samples per texture (each a random identity)
+  std::vector<std::string> expressions;  // blendshape names to draw from; empty = all
+  int expressionsPerSample = 1;          // distinct blendshapes per sample, weights in [0, 1]
+  double identityWeightSd = 1.0;         // standard deviation of the identity weights
+  int textureSize = 1024;                // baked texture width and height
+  std::uint64_t seedOffset = 0;          // added to the sampling seed
+};
+
 struct DatasetManifest {
   std::filesystem::path file;       // where it was read from (for messages)
   std::string scheme = "thesis25";  // built-in name or an absolute path to a scheme JSON
   std::vector<ScanSource> scans;
   std::vector<ProceduralSource> procedural;
   std::vector<IctSource> ict;
+  std::vector<IctTexturedSource> ictTextured;
   std::vector<MakeHumanSource> makehuman;
   std::string name;  // for provenance; defaults to the file's stem
 };
@@ -71,6 +86,9 @@ struct DatasetManifest {
 // "procedural/SEED/EXPRESSION" for a procedural head. Unique within a manifest.
 std::string scanSubjectId(const ScanSource& scan);
 std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression);
+// "ict/TEXTURE/INDEX" for sample INDEX (0-based) of an ict_textured entry wearing TEXTURE's skin;
+// `entry` (0-based) tells entries apart: "ict1/..." for the second entry and so on.
+std::string ictTexturedSubjectId(std::size_t entry, const std::string& texture, int index);
 // "makehuman/SEED/EXPRESSION" for a MakeHuman identity.
 std::string makehumanSubjectId(std::uint64_t seed, const std::string& expression);
 

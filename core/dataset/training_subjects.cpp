@@ -27,13 +27,13 @@ TexturedSubject loadScan(const ScanSource& scan, const Scheme& scheme) {
   subject.subject = scan.subject;
   subject.expression = scan.expression;
   LandmarkSet landmarks = readLandmarks(scan.landmarks, &scheme);
-  const auto up = axisFromName(scan.up);
-  const auto front = axisFromName(scan.front);
   if (scan.scale != 1.0 && landmarks.dims() == 3) {  // file units to mm before the frame
     for (int i = 0; i < landmarks.size(); ++i) {
       if (landmarks.has(i)) landmarks.set(i, Eigen::Vector3d(scan.scale * landmarks.point(i)));
     }
   }
+  const auto up = axisFromName(scan.up);
+  const auto front = axisFromName(scan.front);
   if (!up || !front) throw InputError("scan " + subject.id + ": bad up/front axis");
   std::string why;
   const auto frame = modelFrame(landmarks, scheme, *up, *front, scan.levelEyes, why);
