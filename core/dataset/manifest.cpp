@@ -1,5 +1,6 @@
 #include "core/dataset/manifest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -292,6 +293,38 @@ MakeHumanSource parseMakeHuman(Fields& f) {
   return source;
 }
 
+IctTexturedSource parseIctTextured(Fields& f, const std::vector<ScanSource>& scans) {
+  IctTexturedSource source;
+  source.model = f.path("model", /*directoryAllowed=*/true);
+  source.vertices = f.path("vertices");
+  const bool single = f.has("texture_from") && f.at("texture_from").is_string();
+  source.textureFrom =
+      single ? std::vector<std::string>{f.requiredString("texture_from")} : f.strings("texture_from", {});
+  if (source.textureFrom.empty()) {
+    f.fail(f.name("texture_from"), "missing or empty: name the subject of a scan in scans");
+  }
+  for (std::size_t i = 0; i < source.textureFrom.size(); ++i) {
+    const std::string& subject = source.textureFrom[i];
+    if (std::none_of(scans.begin(), scans.end(),
+                     [&](const ScanSource& scan) { return scan.subject == subject; })) {
+      f.fail(f.name("texture_from") + (single ? std::string() : "[" + std::to_string(i) + "]"),
+             "'" + subject + "' is not the subject of any scan in scans");
+    }
+  }
+  source.identities = static_cast<int>(f.integer("identities", source.identities, 1, 100000));
+  source.expressions = f.strings("expressions", {});
+  source.expressionsPerSample =
+      static_cast<int>(f.integer("expressions_per_sample", source.expressionsPerSample, 0, 1000));
+  if (!source.expressions.empty() &&
+      source.expressionsPerSample > static_cast<int>(source.expressions.size())) {
+    f.fail(f.name("expressions_per_sample"), "is more than the number of expressions listed");
+  }
+  source.identityWeightSd = f.number("identity_weight_sd", source.identityWeightSd, 0.0, 10.0);
+  source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 64, 8192));
+  source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
+  return source;
+}
+
 }  // namespace
 
 std::string scanSubjectId(const ScanSource& scan) {
@@ -300,6 +333,11 @@ std::string scanSubjectId(const ScanSource& scan) {
 
 std::string proceduralSubjectId(std::uint64_t seed, const std::string& expression) {
   return "procedural/" + std::to_string(seed) + "/" + expression;
+}
+
+std::string ictTexturedSubjectId(std::size_t entry, const std::string& texture, int index) {
+  return (entry == 0 ? std::string("ict") : "ict" + std::to_string(entry)) + "/" + texture + "/" +
+         std::to_string(index);
 }
 
 std::string makehumanSubjectId(std::uint64_t seed, const std::string& expression) {
@@ -373,6 +411,18 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     manifest.ict.push_back(parseIct(f));
     f.rejectUnknown();
   }
+
+  const json& ictTextured = arrayField(top, "ict_textured");
+  for (std::size_t i = 0; i < ictTextured.size(); ++i) {
+    Fields f(ictTextured[i], "ict_textured[" + std::to_string(i) + "]", file, folder);
+    manifest.ictTextured.push_back(parseIctTextured(f, manifest.scans));
+    f.rejectUnknown();
+    for (const auto& texture : manifest.ictTextured.back().textureFrom) {
+      for (int k = 0; k < manifest.ictTextured.back().identities; ++k) {
+        addId(ictTexturedSubjectId(i, texture, k), f.name("texture_from"));
+      }
+    }
+  }
   const json& makehuman = arrayField(top, "makehuman");
   for (std::size_t i = 0; i < makehuman.size(); ++i) {
     Fields f(makehuman[i], "makehuman[" + std::to_string(i) + "]", file, folder);
@@ -393,7 +443,7 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
   top.rejectUnknown();
 
   if (manifest.scans.empty() && manifest.procedural.empty() && manifest.ict.empty() &&
-      manifest.makehuman.empty()) {
+      manifest.makehuman.empty() && manifest.ictTextured.empty()) {
     top.fail("scans/procedural/ict_facekit/makehuman", "the manifest lists no data");
   }
   return manifest;
