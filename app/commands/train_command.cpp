@@ -31,6 +31,7 @@ struct TrainArgs {
   fs::path dataset, out, report;
   TrainSettings settings;
   bool noMirror = false;
+  bool noAugmentation = false;
   int samples = 5;
 };
 
@@ -56,6 +57,7 @@ void printSummary(const ClmModel& model, const fs::path& out, double seconds) {
 void runTrain(TrainArgs& args) {
   args.settings.mirrorRightViews = !args.noMirror;
   args.settings.samplesPerView = args.samples;
+  args.settings.augmentationFromManifest = !args.noAugmentation;
   CancelToken token;
   gCancel = &token;
   const auto previous = std::signal(SIGINT, onInterrupt);
@@ -143,6 +145,9 @@ void addTrainCommand(CLI::App& root) {
       ->check(CLI::Range(0.01, 1.0));
   command->add_flag("--no-mirror", args->noMirror,
                     "Render the right-side views instead of mirroring");
+  command->add_flag("--no-augmentation", args->noAugmentation,
+                    "Switch off the manifest's appearance augmentation (backgrounds, colour, "
+                    "blur, noise, JPEG, light, shadows) for this run");
   command->add_flag("--mirror-shapes", args->settings.shape.mirror,
                     "Add a left/right mirrored copy of every training shape to the shape model");
   command

@@ -325,6 +325,32 @@ IctTexturedSource parseIctTextured(Fields& f, const std::vector<ScanSource>& sca
   return source;
 }
 
+AugmentationSettings parseAugmentation(Fields& f) {
+  using A = AugmentationSettings;
+  A a;
+  const std::string background = f.string("background", backgroundName(a.background));
+  if (background == "clutter") {
+    a.background = AugmentationBackground::Clutter;
+  } else if (background != "none") {
+    f.fail(f.name("background"), "expected \"none\" or \"clutter\", got '" + background + "'");
+  }
+  a.colourJitter = f.number("colour_jitter", a.colourJitter, 0.0, A::kMaxColourJitter);
+  a.whiteBalance = f.number("white_balance", a.whiteBalance, 0.0, A::kMaxWhiteBalance);
+  a.blurSigmaMax = f.number("blur_sigma_max", a.blurSigmaMax, 0.0, A::kMaxBlurSigma);
+  a.noiseSd = f.number("noise_sd", a.noiseSd, 0.0, A::kMaxNoiseSd);
+  a.jpegQualityMin =
+      static_cast<int>(f.integer("jpeg_quality_min", a.jpegQualityMin, 0, A::kMaxJpegQuality));
+  if (a.jpegQualityMin > 0 && a.jpegQualityMin < A::kMinJpegQuality) {
+    f.fail(f.name("jpeg_quality_min"),
+           "must be 0 (off) or in [" + std::to_string(A::kMinJpegQuality) + ", " +
+               std::to_string(A::kMaxJpegQuality) + "], got " + std::to_string(a.jpegQualityMin));
+  }
+  a.lightAngleMaxDeg = f.number("light_angle_max", a.lightAngleMaxDeg, 0.0, A::kMaxLightAngleDeg);
+  a.shadows = f.boolean("shadows", a.shadows);
+  a.probability = f.number("probability", a.probability, 0.0, 1.0);
+  return a;
+}
+
 }  // namespace
 
 std::string scanSubjectId(const ScanSource& scan) {
@@ -439,6 +465,11 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
               f.name("seed_offset"));
       }
     }
+  }
+  if (top.has("augmentation")) {
+    Fields f(top.at("augmentation"), "augmentation", file, folder);
+    manifest.augmentation = parseAugmentation(f);
+    f.rejectUnknown();
   }
   top.rejectUnknown();
 

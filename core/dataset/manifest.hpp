@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/dataset/augmentation_settings.hpp"
+
 namespace clm3d {
 
 // A textured 3D scan and its landmarks (any format readLandmarks reads, 3D; 68-point iBUG files
@@ -79,6 +81,7 @@ struct DatasetManifest {
   std::vector<IctSource> ict;
   std::vector<IctTexturedSource> ictTextured;
   std::vector<MakeHumanSource> makehuman;
+  AugmentationSettings augmentation;  // appearance augmentation of the training renders
   std::string name;  // for provenance; defaults to the file's stem
 };
 

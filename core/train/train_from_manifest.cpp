@@ -5,11 +5,14 @@
 
 namespace clm3d {
 
-ClmModel trainFromManifest(const std::filesystem::path& manifestPath, const TrainSettings& settings,
-                           const std::string& toolVersion, const ProgressCallback& progress,
-                           const CancelToken* cancel) {
-  settings.validate();
+ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
+                           const TrainSettings& requested, const std::string& toolVersion,
+                           const ProgressCallback& progress, const CancelToken* cancel) {
+  requested.validate();
   const DatasetManifest manifest = loadManifest(manifestPath);
+  TrainSettings settings = requested;
+  settings.augmentation =
+      requested.augmentationFromManifest ? manifest.augmentation : AugmentationSettings{};
   const auto loadingProgress = [&](double fraction, std::string_view) {
     if (progress) progress(0.25 * fraction, "loading");
   };

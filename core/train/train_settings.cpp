@@ -49,6 +49,21 @@ void TrainSettings::validate() const {
   require(p.lightDirection >= 0 && p.lightDirection <= 1, "light jitter must be 0..1");
   require(p.ambient >= 0 && p.ambient <= 0.4 && p.diffuse >= 0 && p.diffuse <= 0.6,
           "ambient/diffuse jitter must be 0..0.4 / 0..0.6");
+  const AugmentationSettings& a = augmentation;
+  require(a.colourJitter >= 0 && a.colourJitter <= AugmentationSettings::kMaxColourJitter,
+          "augmentation colour jitter must be 0..0.5");
+  require(a.whiteBalance >= 0 && a.whiteBalance <= AugmentationSettings::kMaxWhiteBalance,
+          "augmentation white balance must be 0..0.5");
+  require(a.blurSigmaMax >= 0 && a.blurSigmaMax <= AugmentationSettings::kMaxBlurSigma,
+          "augmentation blur sigma must be 0..5 pixels");
+  require(a.noiseSd >= 0 && a.noiseSd <= AugmentationSettings::kMaxNoiseSd,
+          "augmentation noise sd must be 0..0.5");
+  require(a.jpegQualityMin == 0 || (a.jpegQualityMin >= AugmentationSettings::kMinJpegQuality &&
+                                    a.jpegQualityMin <= AugmentationSettings::kMaxJpegQuality),
+          "augmentation JPEG quality must be 0 (off) or 5..95");
+  require(a.lightAngleMaxDeg >= 0 && a.lightAngleMaxDeg <= AugmentationSettings::kMaxLightAngleDeg,
+          "augmentation light angle must be 0..90 degrees");
+  require(a.probability >= 0 && a.probability <= 1, "augmentation probability must be 0..1");
 }
 
 std::vector<ViewCentre> TrainSettings::views() const {
@@ -99,6 +114,17 @@ std::string TrainSettings::toJson() const {
   j["supersample"] = supersample;
   j["render_size"] = renderSize();
   j["greyscale"] = true;
+  if (augmentation.any()) {  // absent when off, so models trained without it are unchanged
+    j["augmentation"] = {{"background", backgroundName(augmentation.background)},
+                         {"colour_jitter", augmentation.colourJitter},
+                         {"white_balance", augmentation.whiteBalance},
+                         {"blur_sigma_max", augmentation.blurSigmaMax},
+                         {"noise_sd", augmentation.noiseSd},
+                         {"jpeg_quality_min", augmentation.jpegQualityMin},
+                         {"light_angle_max", augmentation.lightAngleMaxDeg},
+                         {"shadows", augmentation.shadows},
+                         {"probability", augmentation.probability}};
+  }
   j["seed"] = seed;
   return j.dump(2);
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dataset/augmentation_settings.hpp"
 #include "core/model/shape_model.hpp"
 
 namespace clm3d {
@@ -45,6 +46,10 @@ struct TrainSettings {
   bool singleView = false;        // the 2D baseline: one frontal view, 2D shape model
   double hiddenShare = 0.5;       // hidden in more than this share of samples -> left out
   int supersample = 2;            // renderer anti-aliasing
+  // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
+  // the manifest unless augmentationFromManifest is false (clm3d train --no-augmentation).
+  AugmentationSettings augmentation;
+  bool augmentationFromManifest = true;  // not stored: the stored `augmentation` says what was used
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = one per core (not stored: the model does not depend on it)
 

@@ -10,33 +10,29 @@
 #include "core/image/patch_sampling.hpp"
 #include "core/image/pyramid.hpp"
 #include "core/model/texture_model.hpp"
+#include "core/train/cast_shadow.hpp"
+#include "core/train/sample_random.hpp"
 
 namespace clm3d {
 namespace {
 
-// SplitMix64: a small, well-mixed, portable generator (std distributions are not portable).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [-range, range].
-  double symmetric(double range) {
-    const double unit = static_cast<double>(next() >> 11) * 0x1.0p-53;
-    return (2.0 * unit - 1.0) * range;
-  }
+constexpr std::uint64_t kAugmentationStream = 0xA0637E57ull;
 
- private:
-  std::uint64_t state_;
-};
-
-std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
-  Random r(a ^ (b * 0xD1B54A32D192ED03ull));
-  return r.next();
+// The landmarks' centroid and a radius that holds the whole head (twice the farthest landmark).
+std::pair<Eigen::Vector3d, double> headSphere(const LandmarkSet& landmarks) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int i = 0; i < landmarks.size(); ++i) {
+    if (!landmarks.has(i)) continue;
+    centroid += landmarks.point(i);
+    ++count;
+  }
+  centroid /= std::max(1, count);
+  double farthest = 0.0;
+  for (int i = 0; i < landmarks.size(); ++i) {
+    if (landmarks.has(i)) farthest = std::max(farthest, (landmarks.point(i) - centroid).norm());
+  }
+  return {centroid, 2.0 * farthest};
 }
 
 // Distance from `centre` to the nearest different entry of `centres` (0 when there is none).
@@ -53,10 +49,11 @@ double nearestOtherCentre(const std::vector<double>& centres, double centre) {
 
 SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std::uint64_t seed,
                       int subject, int viewIndex, int sample) {
-  const std::uint64_t key = mix(
-      mix(mix(seed, static_cast<std::uint64_t>(subject)), static_cast<std::uint64_t>(viewIndex)),
-      static_cast<std::uint64_t>(sample));
-  Random random(key);
+  const std::uint64_t key =
+      mixKey(mixKey(mixKey(seed, static_cast<std::uint64_t>(subject)),
+                    static_cast<std::uint64_t>(viewIndex)),
+             static_cast<std::uint64_t>(sample));
+  SampleRandom random(key);
   const PerturbationSettings& p = settings.perturbation;
   SampleSpec spec;
   const auto range = [&](const std::vector<double>& centres, double centre) {
@@ -75,6 +72,10 @@ SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std
   if (spec.lighting.direction.z() < 0.3) spec.lighting.direction.z() = 0.3;  // lit from the front
   spec.lighting.ambient = base.ambient + random.symmetric(p.ambient);
   spec.lighting.diffuse = base.diffuse + random.symmetric(p.diffuse);
+  if (settings.augmentation.any()) {  // its own stream: the draws above stay as they were
+    spec.augmentation =
+        drawAugmentation(settings.augmentation, mixKey(key, kAugmentationStream), spec.lighting);
+  }
   return spec;
 }
 
@@ -113,18 +114,34 @@ SampleFrame frameSample(const LandmarkSet& landmarks, std::pair<int, int> eyes,
   return frame;
 }
 
+TrainingImage renderTrainingImage(OffscreenRenderer& renderer, const LandmarkSet& landmarks,
+                                  std::pair<int, int> eyes, const SampleSpec& spec,
+                                  const TrainSettings& settings) {
+  TrainingImage out;
+  out.frame = frameSample(landmarks, eyes, spec, settings);
+  out.render = renderer.render(out.frame.pose, out.frame.camera, spec.lighting);
+  out.image = out.render.bgra;
+  if (spec.augmentation.shadows) {
+    const auto [centre, radius] = headSphere(landmarks);
+    out.image = renderCastShadows(renderer, out.render, spec.lighting, centre, radius);
+  }
+  if (spec.augmentation.changesImage()) out.image = augmentImage(out.image, spec.augmentation);
+  return out;
+}
+
 SamplePatches renderSample(OffscreenRenderer& renderer, const LandmarkSet& landmarks,
                            std::pair<int, int> eyes, const SampleSpec& spec,
                            const TrainSettings& settings) {
-  const SampleFrame frame = frameSample(landmarks, eyes, spec, settings);
-  const RenderResult result = renderer.render(frame.pose, frame.camera, spec.lighting);
+  const TrainingImage training = renderTrainingImage(renderer, landmarks, eyes, spec, settings);
+  const SampleFrame& frame = training.frame;
+  const RenderResult& result = training.render;
 
   cv::Mat alpha8;
   cv::extractChannel(result.bgra, alpha8, 3);
   cv::Mat alpha;
   alpha8.convertTo(alpha, CV_32F, 1.0 / 255.0);
   const std::vector<cv::Mat> greyPyramid =
-      gaussianPyramid(toGreyFloat(result.bgra), settings.scales);
+      gaussianPyramid(toGreyFloat(training.image), settings.scales);
   const std::vector<cv::Mat> alphaPyramid = gaussianPyramid(alpha, settings.scales);
 
   const int n = landmarks.size();

@@ -13,6 +13,7 @@
 #include "core/geometry/pose.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/landmark_set.hpp"
+#include "core/train/augmentation.hpp"
 #include "core/train/train_settings.hpp"
 
 namespace clm3d {
@@ -22,6 +23,7 @@ struct SampleSpec {
   double scale = 1.0;                     // multiplies the target inter-ocular distance
   Eigen::Vector2d shiftPixels{0.0, 0.0};  // image-plane shift at the finest scale
   Lighting lighting;
+  AugmentationDraw augmentation;  // none unless settings.augmentation switches effects on
 };
 
 // The perturbed sample `sample` of `view` for subject `subject`: deterministic in its arguments.
@@ -44,6 +46,17 @@ struct SamplePatches {
   std::vector<Eigen::MatrixXf> grey;   // per scale: patchSize^2 x landmarks, each normalised
   std::vector<Eigen::MatrixXf> alpha;  // per scale: patchSize^2 x landmarks, in [0, 1]
 };
+
+// The render of a sample (with cast shadows if drawn) and the image its grey patches are taken
+// from: the render itself, or with augmentation the 8-bit BGR image after augmentImage.
+struct TrainingImage {
+  SampleFrame frame;
+  RenderResult render;  // alpha = coverage (the masks), depth (visibility)
+  cv::Mat image;        // BGRA (no image effects) or BGR
+};
+TrainingImage renderTrainingImage(OffscreenRenderer& renderer, const LandmarkSet& landmarks,
+                                  std::pair<int, int> eyes, const SampleSpec& spec,
+                                  const TrainSettings& settings);
 
 // Renders the sample and extracts its patches; visibility from the depth buffer.
 SamplePatches renderSample(OffscreenRenderer& renderer, const LandmarkSet& landmarks,

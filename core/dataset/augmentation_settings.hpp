@@ -1,0 +1,46 @@
+// The appearance augmentation of training renders (the manifest's `augmentation` object, carried
+// into TrainSettings): which effects make the synthetic renders look more like camera images
+// (cluttered backgrounds, colour and white-balance jitter, blur, sensor noise, JPEG, wider lights
+// and cast shadows). A plain struct in its own header so the training stage can hold it without
+// the manifest. Every effect is off by default, so a manifest without the object trains the same
+// model as before.
+#pragma once
+
+#include <string>
+
+namespace clm3d {
+
+enum class AugmentationBackground { None, Clutter };
+
+struct AugmentationSettings {
+  // The accepted range of each field (the manifest and TrainSettings::validate check them).
+  static constexpr double kMaxColourJitter = 0.5;
+  static constexpr double kMaxWhiteBalance = 0.5;
+  static constexpr double kMaxBlurSigma = 5.0;
+  static constexpr double kMaxNoiseSd = 0.5;
+  static constexpr int kMinJpegQuality = 5;
+  static constexpr int kMaxJpegQuality = 95;
+  static constexpr double kMaxLightAngleDeg = 90.0;
+
+  AugmentationBackground background = AugmentationBackground::None;
+  double colourJitter = 0.0;      // brightness, contrast and saturation factors in 1 +- this
+  double whiteBalance = 0.0;      // per-channel gains in 1 +- this
+  double blurSigmaMax = 0.0;      // Gaussian blur sigma drawn in [0, this] pixels (finest scale)
+  double noiseSd = 0.0;           // sensor noise sd at mid-grey, share of full scale
+  int jpegQualityMin = 0;         // JPEG re-encode at a quality in [this, 95]; 0 = off
+  double lightAngleMaxDeg = 0.0;  // > 0: light drawn within this angle of the view axis
+  bool shadows = false;           // the face casts shadows on itself
+  double probability = 1.0;       // each switched-on effect is applied to a sample this often
+
+  // True if any effect is switched on (probability aside).
+  bool any() const {
+    return background != AugmentationBackground::None || colourJitter > 0 || whiteBalance > 0 ||
+           blurSigmaMax > 0 || noiseSd > 0 || jpegQualityMin > 0 || lightAngleMaxDeg > 0 || shadows;
+  }
+};
+
+inline std::string backgroundName(AugmentationBackground background) {
+  return background == AugmentationBackground::Clutter ? "clutter" : "none";
+}
+
+}  // namespace clm3d
