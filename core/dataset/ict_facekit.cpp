@@ -53,8 +53,14 @@ void addMesh(MeshPoints& meshes, const fs::path& model, const std::string& entry
   }
 }
 
+bool isNeutral(const std::string& entry) {
+  return fs::path(entry).stem().string() == kNeutralName;
+}
+
+// neutralText, when given, receives the whole text of the neutral mesh (for its faces and UVs).
 MeshPoints readArchive(const fs::path& model, const std::vector<int>& indices,
-                       const ProgressCallback& progress, const CancelToken* cancel) {
+                       const ProgressCallback& progress, const CancelToken* cancel,
+                       std::string* neutralText) {
   std::unique_ptr<archive, ArchiveFree> a(archive_read_new());
   if (!a) throw Error("libarchive: out of memory");
   archive_read_support_filter_all(a.get());
@@ -78,6 +84,7 @@ MeshPoints readArchive(const fs::path& model, const std::vector<int>& indices,
       continue;
     }
     ObjVertexPicker picker(indices);
+    std::string* keepText = neutralText && isNeutral(name) ? neutralText : nullptr;
     const void* block = nullptr;
     std::size_t size = 0;
     la_int64_t offset = 0;
@@ -85,6 +92,7 @@ MeshPoints readArchive(const fs::path& model, const std::vector<int>& indices,
       if (cancel) cancel->throwIfCancelled();
       try {
         picker.feed(std::string_view(static_cast<const char*>(block), size));
+        if (keepText) keepText->append(static_cast<const char*>(block), size);
       } catch (const std::invalid_argument& e) {
         throwInputError(model, name + ": " + e.what());
       }
@@ -106,7 +114,8 @@ MeshPoints readArchive(const fs::path& model, const std::vector<int>& indices,
 }
 
 MeshPoints readFolder(const fs::path& model, const std::vector<int>& indices,
-                      const ProgressCallback& progress, const CancelToken* cancel) {
+                      const ProgressCallback& progress, const CancelToken* cancel,
+                      std::string* neutralText) {
   std::vector<fs::path> files;
   double totalBytes = 0.0;
   for (const auto& item : fs::recursive_directory_iterator(model)) {
@@ -124,6 +133,7 @@ MeshPoints readFolder(const fs::path& model, const std::vector<int>& indices,
     std::ifstream in(file, std::ios::binary);
     if (!in) throwInputError(file, "cannot read the file");
     ObjVertexPicker picker(indices);
+    std::string* keepText = neutralText && isNeutral(file.string()) ? neutralText : nullptr;
     while (in) {
       in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
       const auto got = static_cast<std::size_t>(in.gcount());
@@ -131,6 +141,7 @@ MeshPoints readFolder(const fs::path& model, const std::vector<int>& indices,
       doneBytes += static_cast<double>(got);
       try {
         picker.feed(std::string_view(buffer.data(), got));
+        if (keepText) keepText->append(buffer.data(), got);
       } catch (const std::invalid_argument& e) {
         throwInputError(file, e.what());
       }
@@ -213,10 +224,17 @@ std::vector<int> readLandmarkVertexTable(const fs::path& path, const std::string
 
 IctLandmarkBasis loadIctLandmarkBasis(const fs::path& model, const std::vector<int>& vertexIndices,
                                       const ProgressCallback& progress, const CancelToken* cancel) {
+  return loadIctBasis(model, vertexIndices, nullptr, progress, cancel);
+}
+
+IctLandmarkBasis loadIctBasis(const fs::path& model, const std::vector<int>& vertexIndices,
+                              std::string* neutralObjText, const ProgressCallback& progress,
+                              const CancelToken* cancel) {
+  if (neutralObjText) neutralObjText->clear();
   std::error_code ec;
   MeshPoints meshes = fs::is_directory(model, ec)
-                          ? readFolder(model, vertexIndices, progress, cancel)
-                          : readArchive(model, vertexIndices, progress, cancel);
+                          ? readFolder(model, vertexIndices, progress, cancel, neutralObjText)
+                          : readArchive(model, vertexIndices, progress, cancel, neutralObjText);
   const auto neutral = meshes.find(kNeutralName);
   if (neutral == meshes.end()) {
     throwInputError(model, std::string("holds no ") + kNeutralName + ".obj");

@@ -38,6 +38,15 @@ IctLandmarkBasis loadIctLandmarkBasis(const std::filesystem::path& model,
                                       const ProgressCallback& progress = {},
                                       const CancelToken* cancel = nullptr);
 
+// loadIctLandmarkBasis for any vertex list (e.g. every vertex of the regions a textured ICT head
+// keeps: the basis then holds full meshes), also handing back the whole text of
+// generic_neutral_mesh.obj in neutralObjText when given (its faces and UVs), from the same pass
+// over the archive.
+IctLandmarkBasis loadIctBasis(const std::filesystem::path& model,
+                              const std::vector<int>& vertexIndices, std::string* neutralObjText,
+                              const ProgressCallback& progress = {},
+                              const CancelToken* cancel = nullptr);
+
 // How one sample is drawn.
 struct IctSampling {
   double identityWeightSd = 1.0;    // every identity weight ~ N(0, sd^2)
@@ -46,7 +55,8 @@ struct IctSampling {
 };
 
 // Sample `index` of a stream fixed by `seed`: neutral + sum w_i identity_i + sum e_j expression_j,
-// in the model's file coordinates (mm). A drawn _L/_R blendshape comes with its mirror partner at
+// in the model's file coordinates (mm), for whatever vertices the basis holds (landmarks or whole
+// meshes: the weights depend only on the seed, the index and the basis's mesh counts). A drawn _L/_R blendshape comes with its mirror partner at
 // the same weight when the partner is in the pool, so sampled expressions are symmetric.
 Eigen::Matrix3Xd sampleIctLandmarks(const IctLandmarkBasis& basis, const IctSampling& sampling,
                                     std::uint64_t seed, std::uint64_t index);

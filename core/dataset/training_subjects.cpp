@@ -4,12 +4,14 @@
 #include <atomic>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/ict_facekit.hpp"
+#include "core/dataset/ict_textured.hpp"
 #include "core/dataset/makehuman_head.hpp"
 #include "core/dataset/model_frame.hpp"
 #include "core/mesh/mesh_import.hpp"
@@ -165,9 +167,34 @@ std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifes
       }
     }
   }
+  // Textured ICT-FaceKit: each entry's model is read and each texture source baked once; the
+  // samples share the baked textures.
+  for (std::size_t e = 0; e < manifest.ictTextured.size(); ++e) {
+    std::vector<TexturedSubject> skins;
+    for (const std::string& name : manifest.ictTextured[e].textureFrom) {
+      const auto scan = std::find_if(manifest.scans.begin(), manifest.scans.end(),
+                                     [&](const ScanSource& s) { return s.subject == name; });
+      if (scan == manifest.scans.end()) {
+        throwInputError(manifest.file, "field ict_textured[" + std::to_string(e) +
+                                           "].texture_from: no scan of subject '" + name + "'");
+      }
+      skins.push_back(loadScan(*scan, scheme));
+    }
+    const auto set = std::make_shared<const IctTexturedSet>(
+        prepareIctTextured(manifest, e, skins, scheme, {}, cancel));
+    for (std::size_t t = 0; t < set->textures.size(); ++t) {
+      for (int k = 0; k < set->source.identities; ++k) {
+        jobs.emplace_back([set, t, k, &scheme] { return sampleIctTextured(*set, scheme, t, k); });
+      }
+    }
+  }
   std::vector<TexturedSubject> subjects;
   runJobs(jobs, subjects, threads, progress, cancel);
   return subjects;
+}
+
+TexturedSubject loadScanSubject(const ScanSource& scan, const Scheme& scheme) {
+  return loadScan(scan, scheme);
 }
 
 }  // namespace clm3d

@@ -11,6 +11,7 @@
 #include "core/dataset/manifest.hpp"
 #include "core/mesh/textured_mesh.hpp"
 #include "core/scheme/landmark_set.hpp"
+#include "core/scheme/scheme.hpp"
 
 namespace clm3d {
 
@@ -34,6 +35,10 @@ struct TexturedSubject {
 std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifest, int threads,
                                                   const ProgressCallback& progress = {},
                                                   const CancelToken* cancel = nullptr);
+
+// One scan as loadTexturedSubjects loads it (file units to mm, turned into model axes, landmark 1
+// at the origin), e.g. to register a template onto it (clm3d ict-texture).
+TexturedSubject loadScanSubject(const ScanSource& scan, const Scheme& scheme);
 
 // Shape-only 3D landmark sets from the manifest's ICT-FaceKit sources (in order, each
 // `identities` samples), in the same coordinates as the textured subjects (mm, +y up, +z front,
