@@ -27,8 +27,9 @@ struct TexturedSubject {
 // Loads the scans and generates the procedural heads, on `threads` threads (0 = one per core),
 // in manifest order: scans first, then each procedural entry seed by seed, each seed's expressions
 // in the order listed, then each MakeHuman entry identity by identity ("makehuman/SEED/EXPRESSION",
-// seed = seed_offset + i, each read of the MakeHuman data shared by the entry's identities). The
-// result does not depend on `threads`. Scans are turned from their file
+// seed = seed_offset + i, each read of the MakeHuman data shared by the entry's identities), then
+// each ict_textured entry texture by texture ("ict/TEXTURE/K"; the model read and each texture
+// baked once per call, docs/texture-transfer.md). The result does not depend on `threads`. Scans are turned from their file
 // axes (up/front) into model axes, or, with level_eyes (the default), so that the line between the
 // eye centres is the +x axis; then moved so that landmark 1 is the origin. Throws InputError naming
 // the data file that is wrong, Cancelled when `cancel` fires.
