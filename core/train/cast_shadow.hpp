@@ -27,10 +27,11 @@ LightView lightView(const Pose& modelPose, const Eigen::Vector3d& lightDirection
                     const Eigen::Vector3d& centreModel, double radiusMm, int sizePixels);
 
 // Per pixel of `view`, the share (0..1) of its 3x3 neighbourhood in the light's depth map that
-// hides it from the light by more than biasMm: 1 = fully in shadow. 0 on the background and where
-// the point falls outside the light's view. CV_32F, the size of view.depth.
-cv::Mat shadowMask(const RenderResult& view, const RenderResult& fromLight, const LightView& light,
-                   double biasMm);
+// hides it from the light: 1 = fully in shadow. 0 on the background and where the point falls
+// outside the light's view. A point counts as hidden when it is farther from the light than the
+// map by more than a bias that grows with the surface's slope to the light (normal from the
+// view's depth buffer), so that a surface does not shadow itself. CV_32F, the size of view.depth.
+cv::Mat shadowMask(const RenderResult& view, const RenderResult& fromLight, const LightView& light);
 
 // The render `lit` (made with `lighting`) with the shadows the mesh casts on itself: renders the
 // light's depth map and an ambient-only image with `renderer` and blends them by shadowMask.
