@@ -20,7 +20,7 @@
 #                                  absent are skipped with a message
 #   THREADS=2  STEP=2  MAX_YAW=60  training threads; degrees per frame and turn of the sequences
 #   SIZES="1 5 20 all"  AUGMENTATION="off on"  HELD_OUT="james leeperrysmith"
-#   POOL_MAKEHUMAN=12 POOL_ICT_TEXTURED=12 POOL_PROCEDURAL=12   identities per source in the pool
+#   POOL_MAKEHUMAN=15 POOL_ICT_TEXTURED=15 POOL_PROCEDURAL=15   identities per source in the pool
 #   ICT_SHAPES=100                 ICT-FaceKit shape-only samples in every model (shape model only)
 #   TRAIN_ARGS=""                  extra clm3d train options (e.g. "--samples 1" for a quick run)
 #   PYTHON=python3                 standard library only
@@ -42,9 +42,9 @@ MAX_YAW=${MAX_YAW:-60}
 SIZES=${SIZES:-"1 5 20 all"}
 AUGMENTATION=${AUGMENTATION:-"off on"}
 HELD_OUT=${HELD_OUT:-"james leeperrysmith"}
-POOL_MAKEHUMAN=${POOL_MAKEHUMAN:-12}
-POOL_ICT_TEXTURED=${POOL_ICT_TEXTURED:-12}
-POOL_PROCEDURAL=${POOL_PROCEDURAL:-12}
+POOL_MAKEHUMAN=${POOL_MAKEHUMAN:-15}
+POOL_ICT_TEXTURED=${POOL_ICT_TEXTURED:-15}
+POOL_PROCEDURAL=${POOL_PROCEDURAL:-15}
 ICT_SHAPES=${ICT_SHAPES:-100}
 TRAIN_ARGS=${TRAIN_ARGS:-}
 PYTHON=${PYTHON:-python3}
@@ -53,6 +53,10 @@ PYTHON=${PYTHON:-python3}
 CLM3D=$(cd "$(dirname "$CLM3D")" && pwd)/$(basename "$CLM3D")
 [[ -d $SHARED_DATA ]] && SHARED_DATA=$(cd "$SHARED_DATA" && pwd)
 mkdir -p "$OUT"/{manifests,models,seq,tracks,eval,photos,logs,images}
+{ echo "started $(date -u +%FT%TZ) on $(hostname), load: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "clm3d: $CLM3D ($("$CLM3D" --version 2>&1 | head -1)); repository at $(git rev-parse --short HEAD 2>/dev/null || echo '?')"
+  echo "THREADS=$THREADS STEP=$STEP MAX_YAW=$MAX_YAW SIZES='$SIZES' AUGMENTATION='$AUGMENTATION' TRAIN_ARGS='$TRAIN_ARGS'"
+} >>"$OUT/provenance.txt"
 M=$OUT/models S=$OUT/seq T=$OUT/tracks E=$OUT/eval P=$OUT/photos L=$OUT/logs
 
 log() { printf '\n== %s (%s)\n' "$*" "$(date +%T)"; }
@@ -115,9 +119,11 @@ identity_pool() {  # identity_pool HELD
     ((HAVE_ICT_TEX && k <= POOL_ICT_TEXTURED)) && have_scan "$other" && rotation+=("ict_textured:$k")
     ((k <= POOL_PROCEDURAL)) && rotation+=("procedural:$k")
   done
-  ((${#rotation[@]})) && echo "${rotation[0]}"
+  # (an ICT identity needs its skin's scan in the manifest, so the scan comes before it)
+  local first=1; [[ ${rotation[0]:-} == ict_textured:* ]] && first=0
+  ((first)) && echo "${rotation[0]}"
   have_scan "$other" && echo "scan:$other"
-  ((${#rotation[@]} > 1)) && printf '%s\n' "${rotation[@]:1}"
+  ((${#rotation[@]} > first)) && printf '%s\n' "${rotation[@]:first}"
   return 0
 }
 
@@ -138,8 +144,9 @@ makehuman_json() {  # makehuman_json COUNT: the first COUNT MakeHuman identities
   printf '{"root": "%s", "vertices": "%s", "identities": %d}' \
     "$MH_DIR" "$ROOT/tests/fixtures/makehuman/thesis25_vertices.json" "$1"
 }
-ict_textured_json() {  # ict_textured_json COUNT SKIN_SCAN: the first COUNT textured ICT samples
-  printf '{"model": "%s", "texture_scan": %s, "identities": %d}' "$ICT_ARCHIVE" "$(scan_json "$2")" "$1"
+ict_textured_json() {  # ict_textured_json COUNT SKIN_SCAN: the first COUNT ICT samples in the scan's skin
+  printf '{"model": "%s", "vertices": "%s", "texture_from": "%s", "identities": %d}' \
+    "$ICT_ARCHIVE" "$ICT_VERTICES" "$2" "$1"
 }
 ict_shapes_json() {
   printf '{"model": "%s", "vertices": "%s", "identities": %d, "expressions_per_sample": 2}' \
