@@ -56,8 +56,9 @@ struct IctSampling {
 
 // Sample `index` of a stream fixed by `seed`: neutral + sum w_i identity_i + sum e_j expression_j,
 // in the model's file coordinates (mm), for whatever vertices the basis holds (landmarks or whole
-// meshes: the weights depend only on the seed, the index and the basis's mesh counts). A drawn _L/_R blendshape comes with its mirror partner at
-// the same weight when the partner is in the pool, so sampled expressions are symmetric.
+// meshes: the weights depend only on the seed, the index and the basis's mesh counts). A drawn
+// _L/_R blendshape comes with its mirror partner at the same weight when the partner is in the
+// pool, so sampled expressions are symmetric.
 Eigen::Matrix3Xd sampleIctLandmarks(const IctLandmarkBasis& basis, const IctSampling& sampling,
                                     std::uint64_t seed, std::uint64_t index);
 

@@ -220,10 +220,10 @@ ProceduralSource parseProcedural(Fields& f) {
   return source;
 }
 
-IctSource parseIct(Fields& f) {
-  IctSource source;
-  source.model = f.path("model", /*directoryAllowed=*/true);
-  source.vertices = f.path("vertices");
+// The sampling fields the ICT-FaceKit sources share (ict_facekit, ict_textured); the source's own
+// values are the defaults.
+template <class Source>
+void parseIctSampling(Fields& f, Source& source) {
   source.identities = static_cast<int>(f.integer("identities", source.identities, 1, 100000));
   source.expressions = f.strings("expressions", {});
   source.expressionsPerSample =
@@ -234,7 +234,63 @@ IctSource parseIct(Fields& f) {
   }
   source.identityWeightSd = f.number("identity_weight_sd", source.identityWeightSd, 0.0, 10.0);
   source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
+}
+
+IctSource parseIct(Fields& f) {
+  IctSource source;
+  source.model = f.path("model", /*directoryAllowed=*/true);
+  source.vertices = f.path("vertices");
+  parseIctSampling(f, source);
   return source;
+}
+
+IctTexturedSource parseIctTextured(Fields& f, const std::vector<ScanSource>& scans) {
+  IctTexturedSource source;
+  source.model = f.path("model", /*directoryAllowed=*/true);
+  source.vertices = f.path("vertices");
+  const bool single = f.has("texture_from") && f.at("texture_from").is_string();
+  source.textureFrom = single ? std::vector<std::string>{f.requiredString("texture_from")}
+                              : f.strings("texture_from", {});
+  if (source.textureFrom.empty()) {
+    f.fail(f.name("texture_from"), "missing or empty: name the subject of a scan in scans");
+  }
+  for (std::size_t i = 0; i < source.textureFrom.size(); ++i) {
+    const std::string& subject = source.textureFrom[i];
+    if (std::none_of(scans.begin(), scans.end(),
+                     [&](const ScanSource& scan) { return scan.subject == subject; })) {
+      f.fail(f.name("texture_from") + (single ? std::string() : "[" + std::to_string(i) + "]"),
+             "'" + subject + "' is not the subject of any scan in scans");
+    }
+  }
+  parseIctSampling(f, source);
+  source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 64, 8192));
+  return source;
+}
+
+AugmentationSettings parseAugmentation(Fields& f) {
+  using A = AugmentationSettings;
+  A a;
+  const std::string background = f.string("background", backgroundName(a.background));
+  if (background == "clutter") {
+    a.background = AugmentationBackground::Clutter;
+  } else if (background != "none") {
+    f.fail(f.name("background"), "expected \"none\" or \"clutter\", got '" + background + "'");
+  }
+  a.colourJitter = f.number("colour_jitter", a.colourJitter, 0.0, A::kMaxColourJitter);
+  a.whiteBalance = f.number("white_balance", a.whiteBalance, 0.0, A::kMaxWhiteBalance);
+  a.blurSigmaMax = f.number("blur_sigma_max", a.blurSigmaMax, 0.0, A::kMaxBlurSigma);
+  a.noiseSd = f.number("noise_sd", a.noiseSd, 0.0, A::kMaxNoiseSd);
+  a.jpegQualityMin =
+      static_cast<int>(f.integer("jpeg_quality_min", a.jpegQualityMin, 0, A::kMaxJpegQuality));
+  if (a.jpegQualityMin > 0 && a.jpegQualityMin < A::kMinJpegQuality) {
+    f.fail(f.name("jpeg_quality_min"),
+           "must be 0 (off) or in [" + std::to_string(A::kMinJpegQuality) + ", " +
+               std::to_string(A::kMaxJpegQuality) + "], got " + std::to_string(a.jpegQualityMin));
+  }
+  a.lightAngleMaxDeg = f.number("light_angle_max", a.lightAngleMaxDeg, 0.0, A::kMaxLightAngleDeg);
+  a.shadows = f.boolean("shadows", a.shadows);
+  a.probability = f.number("probability", a.probability, 0.0, 1.0);
+  return a;
 }
 
 MakeHumanSource parseMakeHuman(Fields& f) {
@@ -291,64 +347,6 @@ MakeHumanSource parseMakeHuman(Fields& f) {
   source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 16, 8192));
   source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
   return source;
-}
-
-IctTexturedSource parseIctTextured(Fields& f, const std::vector<ScanSource>& scans) {
-  IctTexturedSource source;
-  source.model = f.path("model", /*directoryAllowed=*/true);
-  source.vertices = f.path("vertices");
-  const bool single = f.has("texture_from") && f.at("texture_from").is_string();
-  source.textureFrom =
-      single ? std::vector<std::string>{f.requiredString("texture_from")} : f.strings("texture_from", {});
-  if (source.textureFrom.empty()) {
-    f.fail(f.name("texture_from"), "missing or empty: name the subject of a scan in scans");
-  }
-  for (std::size_t i = 0; i < source.textureFrom.size(); ++i) {
-    const std::string& subject = source.textureFrom[i];
-    if (std::none_of(scans.begin(), scans.end(),
-                     [&](const ScanSource& scan) { return scan.subject == subject; })) {
-      f.fail(f.name("texture_from") + (single ? std::string() : "[" + std::to_string(i) + "]"),
-             "'" + subject + "' is not the subject of any scan in scans");
-    }
-  }
-  source.identities = static_cast<int>(f.integer("identities", source.identities, 1, 100000));
-  source.expressions = f.strings("expressions", {});
-  source.expressionsPerSample =
-      static_cast<int>(f.integer("expressions_per_sample", source.expressionsPerSample, 0, 1000));
-  if (!source.expressions.empty() &&
-      source.expressionsPerSample > static_cast<int>(source.expressions.size())) {
-    f.fail(f.name("expressions_per_sample"), "is more than the number of expressions listed");
-  }
-  source.identityWeightSd = f.number("identity_weight_sd", source.identityWeightSd, 0.0, 10.0);
-  source.textureSize = static_cast<int>(f.integer("texture_size", source.textureSize, 64, 8192));
-  source.seedOffset = f.unsignedInteger("seed_offset", source.seedOffset);
-  return source;
-}
-
-AugmentationSettings parseAugmentation(Fields& f) {
-  using A = AugmentationSettings;
-  A a;
-  const std::string background = f.string("background", backgroundName(a.background));
-  if (background == "clutter") {
-    a.background = AugmentationBackground::Clutter;
-  } else if (background != "none") {
-    f.fail(f.name("background"), "expected \"none\" or \"clutter\", got '" + background + "'");
-  }
-  a.colourJitter = f.number("colour_jitter", a.colourJitter, 0.0, A::kMaxColourJitter);
-  a.whiteBalance = f.number("white_balance", a.whiteBalance, 0.0, A::kMaxWhiteBalance);
-  a.blurSigmaMax = f.number("blur_sigma_max", a.blurSigmaMax, 0.0, A::kMaxBlurSigma);
-  a.noiseSd = f.number("noise_sd", a.noiseSd, 0.0, A::kMaxNoiseSd);
-  a.jpegQualityMin =
-      static_cast<int>(f.integer("jpeg_quality_min", a.jpegQualityMin, 0, A::kMaxJpegQuality));
-  if (a.jpegQualityMin > 0 && a.jpegQualityMin < A::kMinJpegQuality) {
-    f.fail(f.name("jpeg_quality_min"),
-           "must be 0 (off) or in [" + std::to_string(A::kMinJpegQuality) + ", " +
-               std::to_string(A::kMaxJpegQuality) + "], got " + std::to_string(a.jpegQualityMin));
-  }
-  a.lightAngleMaxDeg = f.number("light_angle_max", a.lightAngleMaxDeg, 0.0, A::kMaxLightAngleDeg);
-  a.shadows = f.boolean("shadows", a.shadows);
-  a.probability = f.number("probability", a.probability, 0.0, 1.0);
-  return a;
 }
 
 }  // namespace
@@ -449,6 +447,11 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
       }
     }
   }
+  if (top.has("augmentation")) {
+    Fields f(top.at("augmentation"), "augmentation", file, folder);
+    manifest.augmentation = parseAugmentation(f);
+    f.rejectUnknown();
+  }
   const json& makehuman = arrayField(top, "makehuman");
   for (std::size_t i = 0; i < makehuman.size(); ++i) {
     Fields f(makehuman[i], "makehuman[" + std::to_string(i) + "]", file, folder);
@@ -465,11 +468,6 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
               f.name("seed_offset"));
       }
     }
-  }
-  if (top.has("augmentation")) {
-    Fields f(top.at("augmentation"), "augmentation", file, folder);
-    manifest.augmentation = parseAugmentation(f);
-    f.rejectUnknown();
   }
   top.rejectUnknown();
 

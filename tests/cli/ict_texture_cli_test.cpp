@@ -41,52 +41,43 @@ TEST(IctTextureCli, HelpNamesTheOptions) {
   }
 }
 
+// `clm3d ict-texture` on `model` and the given scan files, with the fixture's vertex table.
+std::string command(const TempDir& dir, const std::filesystem::path& model,
+                    const std::filesystem::path& mesh, const std::filesystem::path& landmarks) {
+  return "ict-texture --model " + quoted(model) + " --vertices " +
+         quoted(test::fixturePath("ict-facekit/thesis25_vertices.json")) + " --scan " +
+         quoted(mesh) + " --landmarks " + quoted(landmarks) + " --out " + quoted(dir / "out");
+}
+
 TEST(IctTextureCli, UsageErrorsExitTwo) {
   TempDir dir;
   const Scan scan = writeScan(dir);
-  const std::string vertices = quoted(test::fixturePath("ict-facekit/thesis25_vertices.json"));
-  const std::string base = "ict-texture --model " + quoted(dir.path()) + " --vertices " + vertices +
-                           " --scan " + quoted(scan.mesh) + " --landmarks " +
-                           quoted(scan.landmarks) + " --out " + quoted(dir / "out");
+  const std::string base = command(dir, dir.path(), scan.mesh, scan.landmarks);
   EXPECT_EQ(runClm3d("ict-texture --scan " + quoted(scan.mesh)).exitCode, 2);  // missing options
   EXPECT_EQ(runClm3d(base + " --texture-size 10").exitCode, 2);
   const auto up = runClm3d(base + " --up sideways");
   EXPECT_EQ(up.exitCode, 2);
   EXPECT_NE(up.output.find("--up"), std::string::npos) << up.output;
   EXPECT_EQ(runClm3d(base + " --up +y --front +y").exitCode, 2);
-  EXPECT_EQ(runClm3d("ict-texture --model " + quoted(dir / "none.tar.xz") + " --vertices " +
-                     vertices + " --scan " + quoted(scan.mesh) + " --landmarks " +
-                     quoted(scan.landmarks) + " --out " + quoted(dir / "out"))
-                .exitCode,
-            2);
+  EXPECT_EQ(runClm3d(command(dir, dir / "none.tar.xz", scan.mesh, scan.landmarks)).exitCode, 2);
 }
 
 TEST(IctTextureCli, BadDataExitsOneNamingTheFile) {
   TempDir dir;
   const Scan scan = writeScan(dir);
-  const std::string vertices = quoted(test::fixturePath("ict-facekit/thesis25_vertices.json"));
   // Not an archive.
   test::writeFile(dir / "model.tar.xz", "not an archive");
-  const auto notArchive =
-      runClm3d("ict-texture --model " + quoted(dir / "model.tar.xz") + " --vertices " + vertices +
-               " --scan " + quoted(scan.mesh) + " --landmarks " + quoted(scan.landmarks) +
-               " --out " + quoted(dir / "out"));
+  const auto notArchive = runClm3d(command(dir, dir / "model.tar.xz", scan.mesh, scan.landmarks));
   EXPECT_EQ(notArchive.exitCode, 1) << notArchive.output;
   EXPECT_NE(notArchive.output.find("model.tar.xz"), std::string::npos) << notArchive.output;
   // A folder without the neutral mesh.
   std::filesystem::create_directories(dir / "empty-model");
-  const auto noNeutral =
-      runClm3d("ict-texture --model " + quoted(dir / "empty-model") + " --vertices " + vertices +
-               " --scan " + quoted(scan.mesh) + " --landmarks " + quoted(scan.landmarks) +
-               " --out " + quoted(dir / "out"));
+  const auto noNeutral = runClm3d(command(dir, dir / "empty-model", scan.mesh, scan.landmarks));
   EXPECT_EQ(noNeutral.exitCode, 1) << noNeutral.output;
   EXPECT_NE(noNeutral.output.find("generic_neutral_mesh"), std::string::npos) << noNeutral.output;
   // Landmarks of another scheme size.
   test::writeFile(dir / "two.pts", "version: 1\nn_points: 2\n{\n1 2\n3 4\n}\n");
-  const auto badLandmarks =
-      runClm3d("ict-texture --model " + quoted(dir / "empty-model") + " --vertices " + vertices +
-               " --scan " + quoted(scan.mesh) + " --landmarks " + quoted(dir / "two.pts") +
-               " --out " + quoted(dir / "out"));
+  const auto badLandmarks = runClm3d(command(dir, dir / "empty-model", scan.mesh, dir / "two.pts"));
   EXPECT_EQ(badLandmarks.exitCode, 1) << badLandmarks.output;
   EXPECT_NE(badLandmarks.output.find("two.pts"), std::string::npos) << badLandmarks.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "ict-head.obj"));
