@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/dataset/obj_vertex_picker.hpp"
 
 namespace clm3d {
@@ -154,23 +155,6 @@ MeshPoints readFolder(const fs::path& model, const std::vector<int>& indices,
   return meshes;
 }
 
-// splitmix64: a small, portable generator, so samples are the same with every standard library.
-struct Rng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double normal() {                                                           // Box-Muller
-    const double u = 1.0 - uniform();                                         // (0, 1]
-    const double v = uniform();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
-  }
-};
-
 std::string mirrorName(const std::string& name) {
   if (name.size() > 2 && name[name.size() - 2] == '_') {
     const char side = name.back();
@@ -258,8 +242,8 @@ IctLandmarkBasis loadIctBasis(const fs::path& model, const std::vector<int>& ver
 
 Eigen::Matrix3Xd sampleIctLandmarks(const IctLandmarkBasis& basis, const IctSampling& sampling,
                                     std::uint64_t seed, std::uint64_t index) {
-  Rng seeder{seed ^ 0x1C7FACE000000000ULL};
-  Rng rng{seeder.next() + index * 0xD1B54A32D192ED03ULL};
+  SplitMixRandom seeder(seed ^ 0x1C7FACE000000000ULL);
+  SplitMixRandom rng(seeder.next() + index * 0xD1B54A32D192ED03ULL);
   Eigen::Matrix3Xd points = basis.neutral;
   for (const auto& identity : basis.identities) {
     points += (sampling.identityWeightSd * rng.normal()) * identity;
@@ -272,10 +256,10 @@ Eigen::Matrix3Xd sampleIctLandmarks(const IctLandmarkBasis& basis, const IctSamp
     const std::size_t pick =
         static_cast<std::size_t>(d) +
         std::min(remaining - 1,
-                 static_cast<std::size_t>(rng.uniform() * static_cast<double>(remaining)));
+                 static_cast<std::size_t>(rng.unit() * static_cast<double>(remaining)));
     std::swap(pool[static_cast<std::size_t>(d)], pool[pick]);
     const int chosen = pool[static_cast<std::size_t>(d)];
-    const double weight = rng.uniform();
+    const double weight = rng.unit();
     points += weight * basis.expressions[static_cast<std::size_t>(chosen)];
     const std::string partner = mirrorName(basis.expressionNames[static_cast<std::size_t>(chosen)]);
     if (partner.empty()) continue;

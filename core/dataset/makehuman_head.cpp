@@ -13,6 +13,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/dataset/makehuman_target.hpp"
 
 namespace clm3d {
@@ -44,20 +45,6 @@ constexpr std::array<std::pair<const char*, const char*>, 6> kOpposedSuffixes = 
     {"concave", "convex"},
     {"compress", "uncompress"},
 }};
-
-// splitmix64: small and portable, so an identity is the same with every standard library.
-struct Rng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double symmetric() { return 2.0 * uniform() - 1.0; }                        // [-1, 1)
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-};
 
 struct ObjFace {
   std::vector<int> v, vt;  // 0-based
@@ -670,7 +657,7 @@ MakeHumanAssets::Head MakeHumanAssets::generate(std::uint64_t seed, const std::s
   if (!neutral && expressionTargets == d.expressions.end()) {
     throw InputError("MakeHuman expression '" + expression + "' was not loaded");
   }
-  Rng rng{seed ^ 0x4D616B6548756D61ULL};  // "MakeHuma"
+  SplitMixRandom rng(seed ^ 0x4D616B6548756D61ULL);  // "MakeHuma"
   Head head;
   const std::size_t skin = rng.below(d.skins.size());
   const std::size_t eyes = rng.below(d.eyeTextures.size());
@@ -682,8 +669,8 @@ MakeHumanAssets::Head MakeHumanAssets::generate(std::uint64_t seed, const std::s
   const double a = symmetric ? 0.0 : d.options.asymmetry;
   for (const Modifier& modifier : d.modifiers) {
     const bool twoSided = modifier.left.twoSided();
-    const double weight = twoSided ? w * rng.symmetric() : w * rng.uniform();
-    const double jitter = a * rng.symmetric();  // drawn for every modifier: same stream always
+    const double weight = twoSided ? w * rng.symmetric(1.0) : w * rng.unit();
+    const double jitter = a * rng.symmetric(1.0);  // drawn for every modifier: same stream always
     modifier.left.apply(static_cast<float>(weight), positions);
     if (modifier.right) {
       double right = weight + jitter;

@@ -182,14 +182,7 @@ SequenceRenderer::SequenceRenderer(const TexturedMesh& mesh, const LandmarkSet& 
   // Framing in the frontal view: the landmarks' centroid at the image centre, landmark 1 (the
   // origin, the centre of rotation) at depth D, D such that the eye centres project
   // interOcularPixels apart.
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (int i = 0; i < landmarks.size(); ++i) {
-    if (!landmarks.has(i)) continue;
-    centroid += landmarks.point(i);
-    ++count;
-  }
-  centroid /= count;
+  const Eigen::Vector3d centroid = landmarks.centroid();
   const Eigen::Vector3d leftEye = landmarks.point(left);
   const Eigen::Vector3d rightEye = landmarks.point(right);
   const double eyeGapMm = (leftEye - rightEye).head<2>().norm();

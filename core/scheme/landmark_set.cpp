@@ -60,6 +60,17 @@ int LandmarkSet::presentCount() const {
   return count;
 }
 
+Eigen::Vector3d LandmarkSet::centroid() const {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int i = 0; i < size(); ++i) {
+    if (!present_[static_cast<std::size_t>(i)]) continue;
+    sum += points_.col(i);
+    ++count;
+  }
+  return count > 0 ? Eigen::Vector3d(sum / count) : sum;
+}
+
 Eigen::Matrix3Xd LandmarkSet::matrix() const {
   Eigen::Matrix3Xd result = points_;
   for (int i = 0; i < size(); ++i) {

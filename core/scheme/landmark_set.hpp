@@ -24,6 +24,8 @@ class LandmarkSet {
   void set(int i, const Eigen::Vector2d& p);
   void setMissing(int i);
   int presentCount() const;
+  // The mean of the present points (the origin when none is present).
+  Eigen::Vector3d centroid() const;
   // All points as columns; missing points are NaN columns.
   Eigen::Matrix3Xd matrix() const;
   std::vector<bool> presentMask() const { return present_; }

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/train/clutter_background.hpp"
-#include "core/train/sample_random.hpp"
 
 namespace clm3d {
 namespace {
@@ -101,7 +101,7 @@ bool AugmentationDraw::changesImage() const {
 
 AugmentationDraw drawAugmentation(const AugmentationSettings& settings, std::uint64_t key,
                                   Lighting& lighting) {
-  SampleRandom random(key);
+  SplitMixRandom random(key);
   AugmentationDraw draw;
   // Every value is drawn whether or not its effect is on, so switching one effect does not move
   // the stream of the others.

@@ -6,13 +6,13 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "core/train/sample_random.hpp"
+#include "core/common/split_mix_random.hpp"
 
 namespace clm3d {
 namespace {
 
 // Saturation varies from nearly grey (walls, furniture) to vivid.
-cv::Scalar randomColour(SampleRandom& random) {
+cv::Scalar randomColour(SplitMixRandom& random) {
   const cv::Scalar vivid(random.uniform(0, 255), random.uniform(0, 255), random.uniform(0, 255));
   const double grey = (vivid[0] + vivid[1] + vivid[2]) / 3.0;
   const double saturation = random.uniform(0.15, 1.0);
@@ -22,7 +22,7 @@ cv::Scalar randomColour(SampleRandom& random) {
 }
 
 // A colour near `colour` (low-contrast clutter) or an unrelated one (high contrast).
-cv::Scalar relatedColour(SampleRandom& random, const cv::Scalar& colour) {
+cv::Scalar relatedColour(SplitMixRandom& random, const cv::Scalar& colour) {
   if (random.chance(0.5)) return randomColour(random);
   const double spread = random.uniform(15, 60);
   cv::Scalar out;
@@ -49,7 +49,7 @@ cv::Mat linearGradient(cv::Size size, const cv::Scalar& from, const cv::Scalar& 
 }
 
 // Stripes: a sinusoid of random period and orientation between two colours (hard or soft edges).
-cv::Mat grating(cv::Size size, SampleRandom& random, const cv::Scalar& a, const cv::Scalar& b) {
+cv::Mat grating(cv::Size size, SplitMixRandom& random, const cv::Scalar& a, const cv::Scalar& b) {
   const double period = random.uniform(4, 40);
   const double angle = random.uniform(0, std::numbers::pi);
   const double phase = random.uniform(0, 2 * std::numbers::pi);
@@ -69,7 +69,7 @@ cv::Mat grating(cv::Size size, SampleRandom& random, const cv::Scalar& a, const 
 }
 
 // Blotches: coarse random values smoothly enlarged, mapped between two colours.
-cv::Mat blotches(cv::Size size, SampleRandom& random, const cv::Scalar& a, const cv::Scalar& b) {
+cv::Mat blotches(cv::Size size, SplitMixRandom& random, const cv::Scalar& a, const cv::Scalar& b) {
   const int cells = random.integer(3, 24);
   cv::Mat coarse(cells, cells, CV_32F);
   for (int y = 0; y < cells; ++y) {
@@ -89,14 +89,14 @@ cv::Mat blotches(cv::Size size, SampleRandom& random, const cv::Scalar& a, const
   return image;
 }
 
-cv::Point randomPoint(SampleRandom& random, cv::Size size) {
+cv::Point randomPoint(SplitMixRandom& random, cv::Size size) {
   // A little outside the image too, so shapes are cut by its border.
   return {random.integer(-size.width / 4, size.width * 5 / 4),
           random.integer(-size.height / 4, size.height * 5 / 4)};
 }
 
 // Draws one random shape into `mask` (255 inside), or, for thick edges, `mask` too.
-void drawShape(cv::Mat& mask, SampleRandom& random) {
+void drawShape(cv::Mat& mask, SplitMixRandom& random) {
   const cv::Size size = mask.size();
   const int extent = std::max(size.width, size.height);
   const int kind = random.integer(0, 4);
@@ -149,7 +149,7 @@ void paste(cv::Mat& image, const cv::Mat& fill, const cv::Mat& mask) {
 }  // namespace
 
 cv::Mat clutterBackground(cv::Size size, std::uint64_t seed) {
-  SampleRandom random(seed);
+  SplitMixRandom random(seed);
   const cv::Scalar base = randomColour(random);
   cv::Mat image = linearGradient(size, base, relatedColour(random, base),
                                  random.uniform(0, 2 * std::numbers::pi));

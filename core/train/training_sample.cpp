@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/image/patch_sampling.hpp"
 #include "core/image/pyramid.hpp"
 #include "core/model/texture_model.hpp"
 #include "core/train/cast_shadow.hpp"
-#include "core/train/sample_random.hpp"
 
 namespace clm3d {
 namespace {
@@ -20,14 +20,7 @@ constexpr std::uint64_t kAugmentationStream = 0xA0637E57ull;
 
 // The landmarks' centroid and a radius that holds the whole head (twice the farthest landmark).
 std::pair<Eigen::Vector3d, double> headSphere(const LandmarkSet& landmarks) {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (int i = 0; i < landmarks.size(); ++i) {
-    if (!landmarks.has(i)) continue;
-    centroid += landmarks.point(i);
-    ++count;
-  }
-  centroid /= std::max(1, count);
+  const Eigen::Vector3d centroid = landmarks.centroid();
   double farthest = 0.0;
   for (int i = 0; i < landmarks.size(); ++i) {
     if (landmarks.has(i)) farthest = std::max(farthest, (landmarks.point(i) - centroid).norm());
@@ -49,11 +42,10 @@ double nearestOtherCentre(const std::vector<double>& centres, double centre) {
 
 SampleSpec drawSample(const TrainSettings& settings, const ViewCentre& view, std::uint64_t seed,
                       int subject, int viewIndex, int sample) {
-  const std::uint64_t key =
-      mixKey(mixKey(mixKey(seed, static_cast<std::uint64_t>(subject)),
-                    static_cast<std::uint64_t>(viewIndex)),
-             static_cast<std::uint64_t>(sample));
-  SampleRandom random(key);
+  const std::uint64_t key = mixKey(mixKey(mixKey(seed, static_cast<std::uint64_t>(subject)),
+                                          static_cast<std::uint64_t>(viewIndex)),
+                                   static_cast<std::uint64_t>(sample));
+  SplitMixRandom random(key);
   const PerturbationSettings& p = settings.perturbation;
   SampleSpec spec;
   const auto range = [&](const std::vector<double>& centres, double centre) {
@@ -88,14 +80,7 @@ SampleFrame frameSample(const LandmarkSet& landmarks, std::pair<int, int> eyes,
   }
   const double iodMm = (landmarks.point(eyes.first) - landmarks.point(eyes.second)).norm();
   if (!(iodMm > 1e-6)) throw InputError("training: a subject's eye centres coincide");
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (int i = 0; i < landmarks.size(); ++i) {
-    if (!landmarks.has(i)) continue;
-    centroid += landmarks.point(i);
-    ++count;
-  }
-  centroid /= count;
+  const Eigen::Vector3d centroid = landmarks.centroid();
 
   const int size = settings.renderSize();
   SampleFrame frame;

@@ -64,5 +64,15 @@ TEST(LandmarkSet, Equality) {
   EXPECT_FALSE(LandmarkSet(2, 2) == LandmarkSet(2, 3));
 }
 
+TEST(LandmarkSet, CentroidIsTheMeanOfThePresentPoints) {
+  LandmarkSet set(4, 3);
+  EXPECT_EQ(set.centroid(), Eigen::Vector3d::Zero());  // none present
+  set.set(0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  set.set(2, Eigen::Vector3d(3.0, -2.0, 5.0));
+  set.set(3, Eigen::Vector3d(100.0, 100.0, 100.0));
+  set.setMissing(3);
+  EXPECT_TRUE(set.centroid().isApprox(Eigen::Vector3d(2.0, 0.0, 4.0)));
+}
+
 }  // namespace
 }  // namespace clm3d

@@ -1,17 +1,20 @@
-// The random stream of one training sample: SplitMix64, a small, well-mixed and portable
-// generator (the std distributions are not portable), and `mixKey` to derive independent keys
-// (seed -> subject -> view -> sample -> effect). Every draw of a sample comes from its own stream,
-// so training renders do not depend on which thread made them.
+// SplitMix64, the project's one random generator: small, well mixed and portable (the std
+// distributions differ between standard libraries), so a seed gives the same training renders,
+// MakeHuman identities and ICT samples everywhere; and `mixKey` to derive independent keys
+// (seed -> subject -> view -> sample -> effect), so that every draw comes from its own stream and
+// results do not depend on which thread made them.
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <numbers>
 
 namespace clm3d {
 
-class SampleRandom {
+class SplitMixRandom {
  public:
-  explicit SampleRandom(std::uint64_t seed) : state_(seed) {}
+  explicit SplitMixRandom(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next() {
     std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -30,6 +33,14 @@ class SampleRandom {
   }
   // True with probability p.
   bool chance(double p) { return unit() < p; }
+  // Uniform index in [0, n) (n > 0; the modulo bias is negligible for small n).
+  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
+  // Standard normal (Box-Muller, one value per two draws).
+  double normal() {
+    const double u = 1.0 - unit();  // (0, 1]
+    const double v = unit();
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+  }
 
  private:
   std::uint64_t state_;
@@ -37,7 +48,7 @@ class SampleRandom {
 
 // A key derived from `a` and `b`, well mixed (different b, unrelated streams).
 inline std::uint64_t mixKey(std::uint64_t a, std::uint64_t b) {
-  SampleRandom r(a ^ (b * 0xD1B54A32D192ED03ull));
+  SplitMixRandom r(a ^ (b * 0xD1B54A32D192ED03ull));
   return r.next();
 }
 
