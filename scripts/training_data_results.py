@@ -4,10 +4,11 @@
 Usage: training_data_results.py EVAL_DIR PHOTO_DIR RESULTS.csv PHOTOS.csv < MODELS
 
 MODELS: one line per model, "NAME HELD_OUT IDENTITIES AUGMENTATION [TRAIN_SECONDS]". Reads
-EVAL_DIR/NAME--HELD-{left,right}.json (clm3d eval --json) and EVAL_DIR/NAME--PHOTO--START.json
-(clm3d eval-points --json; PHOTO from PHOTO_DIR/*-truth25.pts; a missing file = the fit failed).
-RESULTS.csv: one row per model x test (each turn, both turns pooled, photos from each start); PHOTOS.csv: one row
-per model x photo x start. Standard library only.
+EVAL_DIR/NAME--HELD-{left,right}[--truestart].json (clm3d eval --json) and
+EVAL_DIR/NAME--PHOTO--START.json (clm3d eval-points --json; PHOTO from PHOTO_DIR/*-truth25.pts; a
+missing file = the fit failed). RESULTS.csv: one row per model x test (each turn and both turns
+pooled, from the detector and from the true first frame; photos from each start); PHOTOS.csv: one
+row per model x photo x start. Standard library only.
 """
 import glob
 import json
@@ -40,22 +41,24 @@ def main():
             continue
         name, held, n, aug, *seconds = line.split()
         head = f"{name},{held},{n},{aug},{seconds[0] if seconds else ''}"
-        pooled, converged, normalised = [], 0, 0
-        for side in ("left", "right"):
-            path = f"{evals}/{name}--{held}-{side}.json"
-            if os.path.exists(path):
+        for variant in ("", "-truestart"):
+            pooled, converged, normalised = [], 0, 0
+            for side in ("left", "right"):
+                path = f"{evals}/{name}--{held}-{side}{variant.replace('-', '--')}.json"
+                if not os.path.exists(path):
+                    continue
                 p = json.load(open(path))["predictions"][0]
-                results.append(f"{head},sequence,{held}-{side},{fmt(p['error']['mean'])},"
-                               f"{fmt(p['error']['median'])},{fmt(p['convergence_rate'])},"
-                               f"{p['frames']['scored']}")
+                results.append(f"{head},sequence{variant},{held}-{side}{variant},"
+                               f"{fmt(p['error']['mean'])},{fmt(p['error']['median'])},"
+                               f"{fmt(p['convergence_rate'])},{p['frames']['scored']}")
                 pooled += [f["error"] for f in p["per_frame"] if f["error"] is not None]
                 converged += p["frames"]["converged"]
                 normalised += p["frames"]["normalised"]
-        if pooled:
-            # Both turns pooled frame by frame (the frame counts of the two are equal).
-            results.append(f"{head},both,{held}-both,{fmt(statistics.mean(pooled))},"
-                           f"{fmt(statistics.median(pooled))},{fmt(converged / normalised)},"
-                           f"{len(pooled)}")
+            if pooled:
+                # Both turns pooled frame by frame (the frame counts of the two are equal).
+                results.append(f"{head},both{variant},{held}-both{variant},"
+                               f"{fmt(statistics.mean(pooled))},{fmt(statistics.median(pooled))},"
+                               f"{fmt(converged / normalised)},{len(pooled)}")
         for start in ("detector", "start5"):
             errors = []
             for photo in photos:

@@ -465,14 +465,15 @@ cv::Mat plotLines(const std::vector<LineSeries>& series, const LinePlotOptions& 
   }
   const double top = niceCeil(std::max(std::abs(yMax), 1e-9) * 1.05);
   const double bottom = options.yFromZero ? std::min(0.0, yMin) : yMin - 0.05 * (yMax - yMin);
+  std::vector<LegendEntry> legend;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    legend.push_back({series[i].label, seriesColour(i)});
+  }
+  // Wide enough for the title.
+  const int width =
+      std::max(kPlotWidth, measure(options.title, kTitleFont, kTitleThickness).width + 4 * kPad);
   Chart chart(options.title, x, niceAxis(bottom, std::max(top, bottom + 1e-9), options.yLabel, 6),
-              [&] {
-                std::vector<LegendEntry> legend;
-                for (std::size_t i = 0; i < series.size(); ++i) {
-                  legend.push_back({series[i].label, seriesColour(i)});
-                }
-                return legend;
-              }());
+              legend, width);
   for (std::size_t i = 0; i < series.size(); ++i) {
     std::vector<cv::Point2d> points;
     for (const auto& p : series[i].points) {

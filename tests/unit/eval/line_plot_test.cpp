@@ -4,6 +4,7 @@
 
 #include <opencv2/core.hpp>
 #include <stdexcept>
+#include <string>
 
 #include "core/common/error.hpp"
 #include "core/eval/eval_plots.hpp"
@@ -93,6 +94,26 @@ TEST(LinePlot, DrawsEverySeriesInItsColourOnALogAxis) {
   // A single series draws no orange.
   const auto one = plotLines({series[0]}, {"t", "x", "y", false});
   EXPECT_EQ(countNear(one, cv::Scalar(14, 127, 255)), 0);
+}
+
+// True if the outermost pixels are all white: nothing drawn runs off the picture.
+bool borderIsWhite(const cv::Mat& image, int margin = 3) {
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const bool border =
+          x < margin || y < margin || x >= image.cols - margin || y >= image.rows - margin;
+      if (border && image.at<cv::Vec3b>(y, x) != cv::Vec3b(255, 255, 255)) return false;
+    }
+  }
+  return true;
+}
+
+TEST(LinePlot, ALongTitleWidensThePictureInsteadOfRunningOffIt) {
+  const std::string title(120, 'W');
+  const auto image = plotLines({{"a", {{1, 0.3}, {5, 0.25}}}}, {title, "x", "y", true});
+  EXPECT_GT(image.cols, 960);
+  EXPECT_TRUE(borderIsWhite(image));
+  EXPECT_TRUE(borderIsWhite(plotLines({{"a", {{1, 0.3}, {5, 0.25}}}}, {"short", "x", "y", false})));
 }
 
 TEST(LinePlot, RejectsNothingToPlotAndNonPositiveLogX) {
