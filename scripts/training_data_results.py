@@ -8,7 +8,8 @@ EVAL_DIR/NAME--HELD-{left,right}[--truestart].json (clm3d eval --json) and
 EVAL_DIR/NAME--PHOTO--START.json (clm3d eval-points --json; PHOTO from PHOTO_DIR/*-truth25.pts; a
 missing file = the fit failed). RESULTS.csv: one row per model x test (each turn and both turns
 pooled, from the detector and from the true first frame; photos from each start); PHOTOS.csv: one
-row per model x photo x start. Standard library only.
+row per model x photo x start; RESULTS.md: one line per model (mean (median), converged share).
+Standard library only.
 """
 import glob
 import json
@@ -70,6 +71,15 @@ def main():
                 errors.append(r["error"])
                 per_photo.append(f"{name},{held},{n},{aug},{photo},{start},{fmt(r['error'])},"
                                  f"{fmt(r['max_error'])},{r['found_points']},{r['scored_points']}")
+            if photos and start == "detector":
+                # The photos where the detector picked the annotated face (a fit of another
+                # person is off by more than one eye distance).
+                right = [e for e in errors if e is not None and e < 1.0]
+                results.append(f"{head},photos,photos-detector-right-face,"
+                               f"{fmt(statistics.mean(right)) if right else ''},"
+                               f"{fmt(statistics.median(right)) if right else ''},"
+                               f"{fmt(sum(e < 0.18 for e in right) / len(right)) if right else ''},"
+                               f"{len(right)}")
             if photos:
                 ok = [e for e in errors if e is not None]
                 # convergence: photos fitted with error < 0.18 over all photos (a failed fit counts
@@ -80,6 +90,34 @@ def main():
                                f"{fmt(sum(e < 0.18 for e in ok) / len(photos))},{len(ok)}")
     write(results_csv, results)
     write(photos_csv, per_photo)
+    write(os.path.splitext(results_csv)[0] + ".md", summary_markdown(results))
+
+
+def summary_markdown(results):
+    """One line per model: the pooled turns from each start, the photos; errors as mean (median)."""
+    header = results[0].split(",")
+    rows = [dict(zip(header, r.split(","))) for r in results[1:]]
+    models = []
+    for r in rows:
+        if r["model"] not in [m["model"] for m in models]:
+            models.append(r)
+    def cell(model, test, what=("error_mean", "error_median", "convergence")):
+        for r in rows:
+            if r["model"] == model and r["test"] == test and r["error_mean"]:
+                mean, median, conv = (r[w] for w in what)
+                return f"{float(mean):.3f} ({float(median):.3f}), {100 * float(conv):.0f}%"
+        return "-"
+    lines = ["| model | held out | identities | augmentation | train (s) | turns, detector start | "
+             "turns, true first frame | photos, 5-point start | photos, detector (right face) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for m in models:
+        held = m["held_out"]
+        lines.append(f"| {m['model']} | {held} | {m['identities']} | {m['augmentation']} | "
+                     f"{m['train_seconds']} | {cell(m['model'], f'{held}-both')} | "
+                     f"{cell(m['model'], f'{held}-both-truestart')} | "
+                     f"{cell(m['model'], 'photos-start5')} | "
+                     f"{cell(m['model'], 'photos-detector-right-face')} |")
+    return lines
 
 
 if __name__ == "__main__":
