@@ -146,8 +146,8 @@ void addTrainCommand(CLI::App& root) {
   command->add_flag("--no-mirror", args->noMirror,
                     "Render the right-side views instead of mirroring");
   command->add_flag("--no-augmentation", args->noAugmentation,
-                    "Switch off the manifest's appearance augmentation (backgrounds, colour, "
-                    "blur, noise, JPEG, light, shadows) for this run");
+                    "Switch off all appearance augmentation for this run, the default cluttered "
+                    "background included: renders on flat black");
   command->add_flag("--mirror-shapes", args->settings.shape.mirror,
                     "Add a left/right mirrored copy of every training shape to the shape model");
   command

@@ -2,8 +2,10 @@
 // into TrainSettings): which effects make the synthetic renders look more like camera images
 // (cluttered backgrounds, colour and white-balance jitter, blur, sensor noise, JPEG, wider lights
 // and cast shadows). A plain struct in its own header so the training stage can hold it without
-// the manifest. Every effect is off by default, so a manifest without the object trains the same
-// model as before.
+// the manifest. By default only the cluttered background is on: a flat black background taught the
+// contour patches a face-brighter-than-background edge, and a face turned away from the light in
+// front of a brighter background lost its contour (docs/experiments.md, section 10). The other
+// effects are switched on per manifest (their effect: docs/training-data.md).
 #pragma once
 
 #include <string>
@@ -22,7 +24,7 @@ struct AugmentationSettings {
   static constexpr int kMaxJpegQuality = 95;
   static constexpr double kMaxLightAngleDeg = 90.0;
 
-  AugmentationBackground background = AugmentationBackground::None;
+  AugmentationBackground background = AugmentationBackground::Clutter;
   double colourJitter = 0.0;      // brightness, contrast and saturation factors in 1 +- this
   double whiteBalance = 0.0;      // per-channel gains in 1 +- this
   double blurSigmaMax = 0.0;      // Gaussian blur sigma drawn in [0, this] pixels (finest scale)
@@ -31,6 +33,13 @@ struct AugmentationSettings {
   double lightAngleMaxDeg = 0.0;  // > 0: light drawn within this angle of the view axis
   bool shadows = false;           // the face casts shadows on itself
   double probability = 1.0;       // each switched-on effect is applied to a sample this often
+
+  // Every effect off: training renders on flat black, as before augmentation existed.
+  static AugmentationSettings off() {
+    AugmentationSettings a;
+    a.background = AugmentationBackground::None;
+    return a;
+  }
 
   // True if any effect is switched on (probability aside).
   bool any() const {

@@ -273,7 +273,9 @@ AugmentationSettings parseAugmentation(Fields& f) {
   const std::string background = f.string("background", backgroundName(a.background));
   if (background == "clutter") {
     a.background = AugmentationBackground::Clutter;
-  } else if (background != "none") {
+  } else if (background == "none") {
+    a.background = AugmentationBackground::None;
+  } else {
     f.fail(f.name("background"), "expected \"none\" or \"clutter\", got '" + background + "'");
   }
   a.colourJitter = f.number("colour_jitter", a.colourJitter, 0.0, A::kMaxColourJitter);

@@ -12,7 +12,7 @@ ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
   const DatasetManifest manifest = loadManifest(manifestPath);
   TrainSettings settings = requested;
   settings.augmentation =
-      requested.augmentationFromManifest ? manifest.augmentation : AugmentationSettings{};
+      requested.augmentationFromManifest ? manifest.augmentation : AugmentationSettings::off();
   const auto loadingProgress = [&](double fraction, std::string_view) {
     if (progress) progress(0.25 * fraction, "loading");
   };

@@ -1,6 +1,7 @@
-// The manifest's `augmentation` object: parsed into AugmentationSettings, absent = every effect
-// off, bad values rejected with the field named; TrainSettings records it in the model's settings
-// JSON only when an effect is on, and validates its ranges.
+// The manifest's `augmentation` object: parsed into AugmentationSettings, absent = the defaults
+// (a cluttered background, every other effect off), bad values rejected with the field named;
+// TrainSettings records it in the model's settings JSON only when an effect is on, and validates
+// its ranges.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -27,11 +28,17 @@ std::string errorOf(const std::string& augmentation) {
   return "no error";
 }
 
-TEST(AugmentationSettings, AbsentMeansEveryEffectOff) {
+TEST(AugmentationSettings, AbsentMeansOnlyTheClutteredBackground) {
   const DatasetManifest m =
       parseManifest(R"({"version": 1, "procedural": [{"seeds": "1"}]})", "/tmp/m.json");
-  EXPECT_FALSE(m.augmentation.any());
-  EXPECT_FALSE(parseWith("{}").augmentation.any());
+  for (const AugmentationSettings& a : {m.augmentation, parseWith("{}").augmentation}) {
+    EXPECT_EQ(a.background, AugmentationBackground::Clutter);
+    AugmentationSettings rest = a;
+    rest.background = AugmentationBackground::None;
+    EXPECT_FALSE(rest.any());
+  }
+  EXPECT_FALSE(parseWith(R"({"background": "none"})").augmentation.any());
+  EXPECT_FALSE(AugmentationSettings::off().any());
 }
 
 TEST(AugmentationSettings, ParsesEveryField) {
@@ -76,6 +83,9 @@ TEST(AugmentationSettings, BadValuesNameTheField) {
 
 TEST(AugmentationSettings, RecordedInTheModelSettingsOnlyWhenOn) {
   TrainSettings settings;
+  EXPECT_EQ(settings.augmentation.background, AugmentationBackground::Clutter);  // the default
+  EXPECT_TRUE(nlohmann::json::parse(settings.toJson()).contains("augmentation"));
+  settings.augmentation = AugmentationSettings::off();
   EXPECT_FALSE(nlohmann::json::parse(settings.toJson()).contains("augmentation"));
   settings.augmentation.noiseSd = 0.02;
   settings.augmentation.shadows = true;

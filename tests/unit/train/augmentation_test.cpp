@@ -58,7 +58,7 @@ Rendered renderWith(const AugmentationSettings& augmentation, int sample = 0,
 // A frontal render with the plain pipeline: the base of the image effects tests.
 const RenderResult& frontal() {
   static const RenderResult r = [] {
-    const TrainSettings settings = settingsWith({});
+    const TrainSettings settings = settingsWith(AugmentationSettings::off());
     SampleSpec spec;
     OffscreenRenderer renderer(head().mesh);
     const SampleFrame frame = frameSample(head().landmarks, kEyes, spec, settings);
@@ -88,7 +88,7 @@ double gradientEnergy(const cv::Mat& bgr, const cv::Mat& mask) {
 }
 
 TEST(Augmentation, OffRendersExactlyThePlainRender) {
-  const Rendered r = renderWith({});
+  const Rendered r = renderWith(AugmentationSettings::off());
   EXPECT_FALSE(r.spec.augmentation.changesImage());
   EXPECT_FALSE(r.spec.augmentation.shadows);
   OffscreenRenderer renderer(head().mesh);
@@ -98,10 +98,11 @@ TEST(Augmentation, OffRendersExactlyThePlainRender) {
 }
 
 TEST(Augmentation, ImageEffectsDoNotMoveThePoseOrLightDraws) {
-  AugmentationSettings jpegOnly;
+  AugmentationSettings jpegOnly = AugmentationSettings::off();
   jpegOnly.jpegQualityMin = 50;
   for (int sample = 0; sample < 5; ++sample) {
-    const SampleSpec off = drawSample(settingsWith({}), {0, 30}, 9, 1, 2, sample);
+    const SampleSpec off =
+        drawSample(settingsWith(AugmentationSettings::off()), {0, 30}, 9, 1, 2, sample);
     const SampleSpec on = drawSample(settingsWith(jpegOnly), {0, 30}, 9, 1, 2, sample);
     EXPECT_EQ(off.yawDeg, on.yawDeg);
     EXPECT_EQ(off.pitchDeg, on.pitchDeg);
@@ -158,7 +159,7 @@ TEST(Augmentation, WhiteBalanceChangesTheChannelRatios) {
 }
 
 TEST(Augmentation, ColourJitterDrawsFactorsInItsRange) {
-  AugmentationSettings settings;
+  AugmentationSettings settings = AugmentationSettings::off();
   settings.colourJitter = 0.3;
   settings.whiteBalance = 0.2;
   for (std::uint64_t key = 0; key < 50; ++key) {
@@ -236,7 +237,7 @@ TEST(Augmentation, JpegRoundTripsAtTheDrawnQuality) {
 }
 
 TEST(Augmentation, WideLightComesFromTheSideAboveAndBelow) {
-  AugmentationSettings settings;
+  AugmentationSettings settings = AugmentationSettings::off();
   settings.lightAngleMaxDeg = 80;
   double minZ = 1, maxX = -1, minX = 1, maxY = -1, minY = 1;
   for (std::uint64_t key = 0; key < 400; ++key) {
@@ -260,7 +261,7 @@ TEST(Augmentation, WideLightComesFromTheSideAboveAndBelow) {
 }
 
 TEST(Augmentation, ShadowsDarkenTheFarSideOfTheNoseOnly) {
-  const TrainSettings settings = settingsWith({});
+  const TrainSettings settings = settingsWith(AugmentationSettings::off());
   SampleSpec spec;
   // From the subject's left (image right), 50 degrees off the camera axis: the cheek beside the
   // nose on the other side faces the light but the nose stands in the way.
@@ -311,7 +312,7 @@ TEST(Augmentation, ShadowsDarkenTheFarSideOfTheNoseOnly) {
 }
 
 TEST(Augmentation, SameSampleSameBytesAndSamplesDiffer) {
-  AugmentationSettings all;
+  AugmentationSettings all = AugmentationSettings::off();
   all.background = AugmentationBackground::Clutter;
   all.colourJitter = 0.2;
   all.whiteBalance = 0.1;
@@ -367,7 +368,7 @@ TEST(Augmentation, TrainedModelIsTheSameWhateverTheThreadCount) {
 // A contact sheet of augmented training renders for docs/training.md; written to
 // $CLM3D_AUGMENTATION_SHEET when set (docs/images/augmentation-samples.png).
 TEST(Augmentation, ContactSheetOfAugmentedRenders) {
-  AugmentationSettings all;
+  AugmentationSettings all = AugmentationSettings::off();
   all.background = AugmentationBackground::Clutter;
   all.colourJitter = 0.2;
   all.whiteBalance = 0.1;
