@@ -58,6 +58,9 @@ struct SynthArgs {
   double fov = kDefaultVerticalFovDeg;
   double fps = SequenceSettings{}.fps;
   int supersample = SequenceSettings{}.supersample;
+  std::vector<double> lightDir{0.3, 0.4, 1.0};
+  double ambient = Lighting{}.ambient;
+  double diffuse = Lighting{}.diffuse;
   fs::path background;
   std::string format = "avi";
 };
@@ -202,6 +205,10 @@ SequenceSettings toSettings(const SynthArgs& args) {
   settings.verticalFovDeg = args.fov;
   settings.fps = args.fps;
   settings.supersample = args.supersample;
+  settings.lighting.direction =
+      Eigen::Vector3d(args.lightDir[0], args.lightDir[1], args.lightDir[2]);
+  settings.lighting.ambient = args.ambient;
+  settings.lighting.diffuse = args.diffuse;
   settings.backgroundImage = args.background;
   settings.validate();
   return settings;
@@ -360,6 +367,17 @@ void addSynthCommand(CLI::App& root) {
   cmd->add_option("--supersample", args->supersample,
                   "Render at N times the size and average down (anti-aliasing)")
       ->check(CLI::Range(1, 4))
+      ->capture_default_str();
+  cmd->add_option("--light-dir", args->lightDir,
+                  "Direction towards the light, eye space X,Y,Z (as clm3d render)")
+      ->expected(3)
+      ->delimiter(',')
+      ->default_str("0.3,0.4,1");
+  cmd->add_option("--ambient", args->ambient, "Ambient light intensity")
+      ->check(CLI::Range(0.0, 2.0))
+      ->capture_default_str();
+  cmd->add_option("--diffuse", args->diffuse, "Directional light intensity")
+      ->check(CLI::Range(0.0, 2.0))
       ->capture_default_str();
   cmd->add_option("--background", args->background,
                   "Background image (scaled to cover the frame); default plain grey");

@@ -129,6 +129,11 @@ void SequenceSettings::validate() const {
   require(finite(fps) && fps > 0.0 && fps <= 1000.0, "frame rate must be in (0, 1000]");
   require(backgroundGrey >= 0 && backgroundGrey <= 255, "background grey must be 0..255");
   require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
+  require(lighting.direction.allFinite() && lighting.direction.norm() > 1e-9,
+          "the light direction must be a non-zero vector");
+  require(finite(lighting.ambient) && lighting.ambient >= 0.0 && lighting.ambient <= 2.0 &&
+              finite(lighting.diffuse) && lighting.diffuse >= 0.0 && lighting.diffuse <= 2.0,
+          "ambient and diffuse light must be 0..2");
 }
 
 std::vector<SequenceAngles> sequenceAngles(const SequenceSettings& settings) {
@@ -243,7 +248,7 @@ SequenceFrame SequenceRenderer::render(int index) {
   frame.angles = d.angles[static_cast<std::size_t>(index)];
   frame.pose = Pose::fromDegrees(frame.angles.pitchDeg, frame.angles.yawDeg, d.settings.rollDeg,
                                  d.translation);
-  const RenderResult result = d.renderer->render(frame.pose, d.camera);
+  const RenderResult result = d.renderer->render(frame.pose, d.camera, d.settings.lighting);
   composite(result.bgra, d.background, frame.bgr, frame.alpha);
   const int n = static_cast<int>(d.present.size());
   frame.points.setConstant(2, n, std::numeric_limits<double>::quiet_NaN());
@@ -438,7 +443,7 @@ SequenceSummary writeSyntheticSequence(const TexturedMesh& mesh, const LandmarkS
       {"translation_mm",
        {summary.translation.x(), summary.translation.y(), summary.translation.z()}},
   };
-  const Lighting lighting;
+  const Lighting& lighting = settings.lighting;
   json["rendering"] = {
       {"supersample", settings.supersample},
       {"background", settings.backgroundImage.empty()

@@ -18,6 +18,7 @@
 #include "core/geometry/camera.hpp"
 #include "core/geometry/pose.hpp"
 #include "core/mesh/textured_mesh.hpp"
+#include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/scheme.hpp"
 #include "core/track/track_table.hpp"
@@ -56,8 +57,11 @@ struct SequenceSettings {
   std::filesystem::path backgroundImage;
   // Render at supersample x the size and average down (anti-aliased face outline).
   int supersample = 2;
+  // The light of every frame (the renderer's default: from the upper right of the camera).
+  Lighting lighting;
 
-  // Throws InputError for values out of range (size, step, angles, field of view, face size).
+  // Throws InputError for values out of range (size, step, angles, field of view, face size,
+  // light).
   void validate() const;
 };
 

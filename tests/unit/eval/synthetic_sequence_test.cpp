@@ -124,6 +124,9 @@ TEST(SequenceAnglesTest, SettingsOutOfRangeAreInputErrors) {
   invalid([](SequenceSettings& s) { s.verticalFovDeg = 0.0; });
   invalid([](SequenceSettings& s) { s.interOcularPixels = 1000.0; });
   invalid([](SequenceSettings& s) { s.backgroundGrey = 300; });
+  invalid([](SequenceSettings& s) { s.lighting.direction.setZero(); });
+  invalid([](SequenceSettings& s) { s.lighting.ambient = -0.1; });
+  invalid([](SequenceSettings& s) { s.lighting.diffuse = std::nan(""); });
   EXPECT_NO_THROW(SequenceSettings{}.validate());
 }
 
@@ -145,6 +148,35 @@ TEST(SequenceRendererTest, FrontalFrameHasTheRequestedFaceSizeCentred) {
   // Truth is consistent with the pose: landmark 1 is the centre of rotation.
   EXPECT_NEAR(frame.pose.translation.z(), renderer.translation().z(), 1e-12);
   EXPECT_DOUBLE_EQ(frame.angles.yawDeg, 0.0);
+}
+
+// Mean grey of the face pixels in the image's left or right half.
+double faceHalfBrightness(const SequenceFrame& frame, bool leftHalf) {
+  const int half = frame.bgr.cols / 2;
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 0; y < frame.bgr.rows; ++y) {
+    for (int x = leftHalf ? 0 : half; x < (leftHalf ? half : frame.bgr.cols); ++x) {
+      if (frame.alpha.at<uchar>(y, x) < 255) continue;
+      const cv::Vec3b c = frame.bgr.at<cv::Vec3b>(y, x);
+      sum += (c[0] + c[1] + c[2]) / 3.0;
+      ++count;
+    }
+  }
+  return sum / std::max(1, count);
+}
+
+TEST(SequenceRendererTest, TheLightSettingLightsTheSideItComesFrom) {
+  SequenceSettings fromRight = smallSettings();
+  fromRight.lighting.direction = Eigen::Vector3d(1.0, 0.0, 0.3);
+  SequenceSettings fromLeft = fromRight;
+  fromLeft.lighting.direction.x() = -1.0;
+  const SequenceFrame right =
+      SequenceRenderer(head().mesh, head().landmarks, Scheme::thesis25(), fromRight).render(0);
+  const SequenceFrame left =
+      SequenceRenderer(head().mesh, head().landmarks, Scheme::thesis25(), fromLeft).render(0);
+  EXPECT_GT(faceHalfBrightness(right, false), faceHalfBrightness(right, true) + 10.0);
+  EXPECT_GT(faceHalfBrightness(left, true), faceHalfBrightness(left, false) + 10.0);
 }
 
 TEST(SequenceRendererTest, VisibleTruthPointsLieOnTheRenderedFace) {
