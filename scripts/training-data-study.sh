@@ -399,7 +399,10 @@ print(len(d.get("scans", [])) + sum(e.get("identities", 10) for e in d.get("make
       + sum(e.get("identities", 10) * skins(e) for e in d.get("ict_textured", [])) + len(seeds))
 EOF
 )
-  MODELS+=("mixed none $n_mixed $(grep -q '"augmentation"' "$MIXED" && echo on || echo off)")
+  mixed_aug=$("$PYTHON" -c 'import json, sys
+a = json.load(open(sys.argv[1])).get("augmentation", {"background": "clutter"})
+print({"clutter": "clutter", "none": "off"}.get(a.get("background", "clutter"), "on") if set(a) <= {"background"} else "on")' "$MIXED")
+  MODELS+=("mixed none $n_mixed $mixed_aug")
 else
   echo "skipped the mixed model: it needs both scans, MakeHuman, textured ICT and augmentation, and ../shared/data beside the repository (or MIXED=...)"
 fi
