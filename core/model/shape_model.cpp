@@ -175,9 +175,10 @@ Eigen::Matrix3Xd initialReference(const std::vector<Sample>& samples, const Sche
   }
   for (int i = 0; i < n; ++i) {
     if (!known[static_cast<std::size_t>(i)]) {
-      throw Error("shape model: landmark " + scheme.id(i) +
-                  " cannot be placed (missing from every shape, or from every shape that shares "
-                  "3 points with the first)");
+      throw InputError("shape model: landmark " + scheme.id(i) +
+                       " cannot be placed (missing from every shape, or from every shape that "
+                       "shares 3 points with the first): place it in at least one landmark file "
+                       "or add a source that has it");
     }
   }
   return reference;

@@ -35,7 +35,7 @@ LandmarkSet framingLandmarks(const std::vector<const LandmarkSet*>& all, std::si
     throw InputError("training: subject '" + id + "' lacks landmark " +
                      std::to_string(pair.first + 1) + " or " + std::to_string(pair.second + 1) +
                      " (the eye centres, which set the face size in the renders) and no other "
-                     "subject has both to impute them from");
+                     "subject or shape-only set has both to impute them from");
   }
   LandmarkSet framing = target;
   if (!framing.has(pair.first)) framing.set(pair.first, Eigen::Vector3d(sumFirst / donors));

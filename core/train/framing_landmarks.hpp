@@ -1,8 +1,8 @@
 // The landmarks a training render is framed on. The face size of a render comes from the
 // distance between the scheme's normalisation pair (the eye centres); a scan whose eyes are closed
-// has them missing. For such a subject the pair is imputed from the other subjects (each aligned
-// onto it by a similarity on their common points), for framing only: the patches of the missing
-// points are still not sampled.
+// has them missing. For such a subject the pair is imputed from the other subjects and shape-only
+// sets (each aligned onto it by a similarity on their common points), for framing only: the patches
+// of the missing points are still not sampled.
 #pragma once
 
 #include <utility>

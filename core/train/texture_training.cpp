@@ -80,7 +80,8 @@ PatchModel buildPatchModel(const ViewSamples& samples, const std::vector<int>& l
 std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& subjects,
                                           const Scheme& scheme, const TrainSettings& settings,
                                           const ProgressCallback& progress,
-                                          const CancelToken* cancel) {
+                                          const CancelToken* cancel,
+                                          const std::vector<LandmarkSet>& framingDonors) {
   settings.validate();
   if (subjects.empty()) throw InputError("training: no textured subjects to render");
   const int n = scheme.size();
@@ -103,6 +104,8 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     allLandmarks.push_back(subject.landmarks);
     subjectHas.push_back(subject.landmarks->presentMask());
   }
+  // After the subjects: donors of imputed eye centres only (framingLandmarks skips the subject).
+  for (const LandmarkSet& donor : framingDonors) allLandmarks.push_back(&donor);
   std::vector<LandmarkSet> framing;
   for (std::size_t s = 0; s < subjects.size(); ++s) {
     framing.push_back(framingLandmarks(allLandmarks, s, eyes, subjects[s].id));

@@ -29,9 +29,12 @@ struct TrainingSubject {
 // subjects (no subjects, wrong landmark count, eye centres missing and not imputable from the
 // other subjects). A missing landmark does not count as hidden; its patches in that subject's
 // samples are the mean of the other subjects' patches.
+// `framingDonors` (the shape-only sets) may supply the eye centres of a subject that lacks them,
+// for framing its renders, when no other textured subject can.
 std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& subjects,
                                           const Scheme& scheme, const TrainSettings& settings,
                                           const ProgressCallback& progress = {},
-                                          const CancelToken* cancel = nullptr);
+                                          const CancelToken* cancel = nullptr,
+                                          const std::vector<LandmarkSet>& framingDonors = {});
 
 }  // namespace clm3d

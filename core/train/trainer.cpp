@@ -52,7 +52,8 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
   const auto textureProgress = [&](double fraction, std::string_view stage) {
     if (progress) progress(0.02 + 0.98 * fraction, stage);
   };
-  model.views = trainTextureModels(input.subjects, scheme, settings, textureProgress, cancel);
+  model.views = trainTextureModels(input.subjects, scheme, settings, textureProgress, cancel,
+                                   input.shapeOnly);
   model.singleView = settings.singleView;
   model.patchRatio = settings.patchRatio;
   model.settingsJson = settings.toJson();
