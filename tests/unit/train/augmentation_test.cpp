@@ -311,7 +311,8 @@ TEST(Augmentation, ShadowsDarkenTheFarSideOfTheNoseOnly) {
   }
 }
 
-TEST(Augmentation, SameSampleSameBytesAndSamplesDiffer) {
+// Every effect on, the light within lightAngleMaxDeg of the view axis.
+AugmentationSettings everyEffect(double lightAngleMaxDeg) {
   AugmentationSettings all = AugmentationSettings::off();
   all.background = AugmentationBackground::Clutter;
   all.colourJitter = 0.2;
@@ -319,8 +320,13 @@ TEST(Augmentation, SameSampleSameBytesAndSamplesDiffer) {
   all.blurSigmaMax = 1.0;
   all.noiseSd = 0.02;
   all.jpegQualityMin = 40;
-  all.lightAngleMaxDeg = 70;
+  all.lightAngleMaxDeg = lightAngleMaxDeg;
   all.shadows = true;
+  return all;
+}
+
+TEST(Augmentation, SameSampleSameBytesAndSamplesDiffer) {
+  const AugmentationSettings all = everyEffect(70);
   const Rendered a = renderWith(all, 0);
   const Rendered again = renderWith(all, 0);
   const Rendered other = renderWith(all, 1);
@@ -368,15 +374,7 @@ TEST(Augmentation, TrainedModelIsTheSameWhateverTheThreadCount) {
 // A contact sheet of augmented training renders for docs/training.md; written to
 // $CLM3D_AUGMENTATION_SHEET when set (docs/images/augmentation-samples.png).
 TEST(Augmentation, ContactSheetOfAugmentedRenders) {
-  AugmentationSettings all = AugmentationSettings::off();
-  all.background = AugmentationBackground::Clutter;
-  all.colourJitter = 0.2;
-  all.whiteBalance = 0.1;
-  all.blurSigmaMax = 1.0;
-  all.noiseSd = 0.02;
-  all.jpegQualityMin = 40;
-  all.lightAngleMaxDeg = 75;
-  all.shadows = true;
+  const AugmentationSettings all = everyEffect(75);
   std::vector<cv::Mat> tiles;
   std::vector<std::string> captions;
   const std::vector<ViewCentre> views{{0, 0}, {0, -30}, {-30, 30}, {30, -60}};
