@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/fit/response_map.hpp"
 
 namespace clm3d {
 namespace {
@@ -49,6 +50,18 @@ Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& s
   settings_.validate(model);
   scales_ = settings_.scales > 0 ? settings_.scales : modelScales(model);
   optimiser_ = makeOptimiser(settings_.optimiser, settings_.optimiserSettings);
+  if (optimiser_->usesExperts()) {
+    for (const ViewModel& view : model.views) {
+      for (const PatchModel& patches : view.scales) {
+        if (!patches.hasExperts()) {
+          throw InputError("fit: optimiser '" + settings_.optimiser +
+                           "' needs a model with patch experts (trained by clm3d 0.2 or later, "
+                           "model format 2); retrain the model or choose a template optimiser "
+                           "(fastncc, gauss-newton, powell, nelder-mead, condensation)");
+        }
+      }
+    }
+  }
   problem_.setTextureModeLimit(settings_.textureModes);
   eyes_ = model.scheme().normalisationPair();
   const PatchModel& finest = model.views.front().scales.front();
@@ -113,7 +126,7 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
       view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
       problem_.configure(model_->views[static_cast<std::size_t>(view)].scales[level], working_,
                          level, settings_.alphaMask, depth);
-      problem_.synthesiseTemplates(p);
+      if (!optimiser_->usesExperts()) problem_.synthesiseTemplates(p);
       const int m = problem_.landmarkCount();
       before.resize(2, m);
       after.resize(2, m);
@@ -136,7 +149,11 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
   problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
   problem_.synthesiseTemplates(p);
-  result.confidence = problem_.meanNcc(p);
+  result.confidence =
+      optimiser_->usesExperts()
+          ? meanExpertResponse(problem_.image(), problem_.projector(), finest.experts,
+                               finest.patchSize, p)
+          : problem_.meanNcc(p);
   lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
   for (int k = 0; k < problem_.landmarkCount(); ++k) {
     lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);

@@ -39,7 +39,9 @@ struct FitResult {
   Eigen::Matrix2Xd points;     // every scheme landmark, input pixels
   std::vector<bool> modelled;  // landmarks the final view's model holds (the others are hidden)
   int view = -1;
-  double confidence = 0.0;  // mean NCC at the finest scale searched, in [-1, 1]
+  // Template optimisers: mean NCC at the finest scale searched, in [-1, 1]. rlms: the experts'
+  // mean response at the final points (finest scale), in (0, 1).
+  double confidence = 0.0;
   bool converged = false;   // the finest scale met the tolerance within maxIterations
   int iterations = 0;       // over all scales
 };

@@ -1,7 +1,9 @@
 // The optimisers of the search (thesis chapter 4), one interface so the fitter, the CLI and the
-// experiments select them by name: powell, nelder-mead, gauss-newton, fastncc, condensation.
-// Each takes one update step of the parameters against the problem's current templates; the
-// fitter re-synthesises the templates between steps and tests convergence.
+// experiments select them by name: powell, nelder-mead, gauss-newton, fastncc, condensation (the
+// thesis's five, on synthetic templates) and rlms (regularised landmark mean-shift on the
+// discriminative experts' response maps). Each takes one update step of the parameters; the
+// fitter re-synthesises the templates between steps (for those that use them) and tests
+// convergence.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,6 +24,11 @@ struct OptimiserSettings {
   int lineIterations = 12;    // powell: Brent iterations per line search
   int simplexIterations = 0;  // nelder-mead: iterations per step (0 = 20 x parameter count)
   double shapePrior = 1.0;    // gauss-newton and fastncc: weight of the shape prior (0 = none)
+  // rlms: search window radius (level pixels), kernel SD of the mean-shift (level pixels) and
+  // weight of the shape prior in squared level pixels (Saragih et al.'s regularisation r).
+  int rlmsRadius = 6;
+  double rlmsSigma = 1.5;
+  double rlmsRegularisation = 4.0;
 };
 
 class Optimiser {
@@ -32,6 +39,9 @@ class Optimiser {
   virtual void beginFit(const Eigen::Ref<const Eigen::VectorXd>& p) { (void)p; }
   // One update of p against problem's current templates. The caller clamps p afterwards.
   virtual void step(const SearchProblem& problem, Eigen::VectorXd& p) = 0;
+  // True for optimisers that match the view's patch experts, not synthetic templates: the fitter
+  // then skips template synthesis and needs a model with experts.
+  virtual bool usesExperts() const { return false; }
 };
 
 // Throws InputError listing the valid names for an unknown one.

@@ -12,5 +12,6 @@ std::unique_ptr<Optimiser> makeNelderMeadOptimiser(const OptimiserSettings& sett
 std::unique_ptr<Optimiser> makeGaussNewtonOptimiser(const OptimiserSettings& settings);
 std::unique_ptr<Optimiser> makeFastNccOptimiser(const OptimiserSettings& settings);
 std::unique_ptr<Optimiser> makeCondensationOptimiser(const OptimiserSettings& settings);
+std::unique_ptr<Optimiser> makeRlmsOptimiser(const OptimiserSettings& settings);
 
 }  // namespace clm3d

@@ -18,6 +18,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"powell", &makePowellOptimiser},
       {"nelder-mead", &makeNelderMeadOptimiser},
       {"condensation", &makeCondensationOptimiser},
+      {"rlms", &makeRlmsOptimiser},
   };
   return entries;
 }

@@ -51,6 +51,7 @@ class SearchProblem {
   int patchPixels() const { return patchSize_ * patchSize_; }
   const ShapeProjector& projector() const { return projector_; }
   const cv::Mat& image() const { return *image_; }  // the level's grey image, CV_32F
+  const PatchModel& patchModel() const { return *patches_; }  // the configured view and scale
   int level() const { return level_; }
 
   // Masked, normalised template of active landmark k (patchPixels() values).

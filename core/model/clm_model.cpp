@@ -105,6 +105,21 @@ void validatePatchModel(const PatchModel& patch, const ViewModel& view, int n,
       fail(where, "value outside [0, 1]");
     }
   }
+  if (!patch.experts.empty() && patch.experts.size() != patch.landmarks.size()) {
+    fail(field + ".experts", std::to_string(patch.experts.size()) + " experts for " +
+                                 std::to_string(patch.landmarks.size()) + " landmarks");
+  }
+  for (std::size_t e = 0; e < patch.experts.size(); ++e) {
+    const PatchExpert& expert = patch.experts[e];
+    const std::string where = field + ".experts[" + std::to_string(e) + "]";
+    if (expert.weights.size() != pixels) {
+      fail(where, str(expert.weights.size()) + " weights, expected " + str(pixels));
+    }
+    requireFinite(expert.weights, where);
+    if (!std::isfinite(expert.gain) || !std::isfinite(expert.bias)) {
+      fail(where, "gain or bias is not finite");
+    }
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "core/model/model_file.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstring>
@@ -93,20 +94,65 @@ json provenanceJson(const ModelProvenance& provenance) {
           {"notes", provenance.notes}};
 }
 
-json headerJson(const ClmModel& model) {
+bool samePatchModel(const PatchModel& a, const PatchModel& b) {
+  if (a.patchSize != b.patchSize || a.landmarks != b.landmarks || a.pca.mean != b.pca.mean ||
+      a.pca.components != b.pca.components || a.pca.variances != b.pca.variances ||
+      a.alpha != b.alpha || a.experts.size() != b.experts.size()) {
+    return false;
+  }
+  for (std::size_t e = 0; e < a.experts.size(); ++e) {
+    const PatchExpert& x = a.experts[e];
+    const PatchExpert& y = b.experts[e];
+    if (x.weights != y.weights || x.gain != y.gain || x.bias != y.bias) return false;
+  }
+  return true;
+}
+
+// Per view: the index of the stored view it is the exact mirror image of (its arrays are then not
+// written: the reader rebuilds it with mirrorView), or -1 when it is stored in full.
+std::vector<int> mirrorSources(const ClmModel& model) {
+  std::vector<int> sources(model.views.size(), -1);
+  const Scheme scheme = model.scheme();
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    const ViewModel& view = model.views[v];
+    if (!view.mirrored) continue;
+    for (std::size_t u = 0; u < model.views.size(); ++u) {
+      const ViewModel& source = model.views[u];
+      if (u == v || source.mirrored || source.pitchDeg != view.pitchDeg ||
+          source.yawDeg != -view.yawDeg || source.scales.size() != view.scales.size()) {
+        continue;
+      }
+      const ViewModel rebuilt = mirrorView(source, scheme);
+      bool same = rebuilt.visible == view.visible;
+      for (std::size_t s = 0; same && s < view.scales.size(); ++s) {
+        same = samePatchModel(rebuilt.scales[s], view.scales[s]);
+      }
+      if (same) {
+        sources[v] = static_cast<int>(u);
+        break;
+      }
+    }
+  }
+  return sources;
+}
+
+json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
   json views = json::array();
-  for (const ViewModel& view : model.views) {
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    const ViewModel& view = model.views[v];
     json scales = json::array();
     for (const PatchModel& patch : view.scales) {
       scales.push_back({{"patchSize", patch.patchSize},
                         {"landmarks", patch.landmarks},
-                        {"modes", patch.pca.modeCount()}});
+                        {"modes", patch.pca.modeCount()},
+                        {"experts", patch.hasExperts()}});
     }
     std::vector<int> visible;
     for (const bool flag : view.visible) visible.push_back(flag ? 1 : 0);
     views.push_back({{"pitch", view.pitchDeg},
                      {"yaw", view.yawDeg},
                      {"mirrored", view.mirrored},
+                     {"mirrorOf", mirrorOf[v]},
                      {"visible", visible},
                      {"scales", scales}});
   }
@@ -185,8 +231,9 @@ void addValues(std::uint64_t& total, std::uint64_t a, std::uint64_t b, const std
 }
 
 // The model skeleton from the header: every array sized (after checking the total against the
-// payload), no values yet.
-ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
+// payload), no values yet. `mirrorOf` gets, per view, the stored view it mirrors (-1: stored).
+ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t version,
+                      std::vector<int>& mirrorOf) {
   ClmModel model;
   model.schemeJson = text(header, "scheme", "header");
   model.settingsJson = text(header, "settings", "header");
@@ -211,9 +258,23 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
             1 + static_cast<std::uint64_t>(shapeModes), "shape");
   addValues(doubles, static_cast<std::uint64_t>(shapeModes), 1, "shape");
   const json& views = array(header, "views", "header", kMaxViews);
+  mirrorOf.assign(views.size(), -1);
   for (std::size_t v = 0; v < views.size(); ++v) {
     const std::string field = "views[" + std::to_string(v) + "]";
     const json& scales = array(views[v], "scales", field, kMaxScales);
+    if (version >= 2) {
+      const auto source =
+          integer(views[v], "mirrorOf", field, -1, static_cast<std::int64_t>(views.size()) - 1);
+      if (source >= 0) {
+        const json& sourceView = views[static_cast<std::size_t>(source)];
+        if (source == static_cast<std::int64_t>(v) || !sourceView.is_object() ||
+            !sourceView.contains("mirrorOf") || sourceView["mirrorOf"] != -1) {
+          fieldError(field + ".mirrorOf", "must name a view that is stored in full");
+        }
+        mirrorOf[v] = static_cast<int>(source);
+        continue;  // no arrays: rebuilt from the source view
+      }
+    }
     for (std::size_t s = 0; s < scales.size(); ++s) {
       const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
       const auto patchSize = integer(scales[s], "patchSize", scaleField, 1, kMaxPatchSize);
@@ -224,6 +285,11 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
                                  static_cast<std::int64_t>(std::min<std::uint64_t>(d, kMaxValues)));
       addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scaleField);  // mean, alpha, P
       addValues(floats, static_cast<std::uint64_t>(modes), 1, scaleField);
+      if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
+        // weights, gain and bias per landmark
+        addValues(floats, landmarks.size(),
+                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scaleField);
+      }
     }
   }
   const std::uint64_t expected = 8 * doubles + 4 * floats;
@@ -250,6 +316,10 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
       }
       view.visible.push_back(flag == 1);
     }
+    if (mirrorOf[v] >= 0) {  // filled in after the stored views are read
+      model.views.push_back(std::move(view));
+      continue;
+    }
     const json& scales = member(views[v], "scales", field);
     for (std::size_t s = 0; s < scales.size(); ++s) {
       const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
@@ -269,6 +339,9 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes) {
       patch.pca.components.resize(d, modes);
       patch.pca.variances.resize(modes);
       patch.alpha.assign(patch.landmarks.size(), Eigen::VectorXf(pixels));
+      if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
+        patch.experts.assign(patch.landmarks.size(), PatchExpert{Eigen::VectorXf(pixels)});
+      }
       view.scales.push_back(std::move(patch));
     }
     model.views.push_back(std::move(view));
@@ -281,7 +354,15 @@ void readArray(Reader& reader, Eigen::PlainObjectBase<Derived>& destination) {
   reader.readInto(destination.data(), static_cast<std::size_t>(destination.size()));
 }
 
-ClmModel parsePayload(std::string_view payload) {
+void readExperts(Reader& reader, std::vector<PatchExpert>& experts) {
+  for (PatchExpert& expert : experts) {
+    readArray(reader, expert.weights);
+    reader.readInto(&expert.gain, 1);
+    reader.readInto(&expert.bias, 1);
+  }
+}
+
+ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
   Reader reader(payload);
   const auto headerLength = reader.read<std::uint64_t>();
   if (headerLength > reader.remaining()) throw Error("header length exceeds the payload");
@@ -289,7 +370,8 @@ ClmModel parsePayload(std::string_view payload) {
   const json header = json::parse(headerText, nullptr, false);
   if (header.is_discarded() || !header.is_object()) throw Error("header is not a JSON object");
 
-  ClmModel model = skeletonFrom(header, reader.remaining());
+  std::vector<int> mirrorOf;
+  ClmModel model = skeletonFrom(header, reader.remaining(), version, mirrorOf);
   readArray(reader, model.shape.meanShape);
   readArray(reader, model.shape.modes);
   readArray(reader, model.shape.variances);
@@ -299,6 +381,21 @@ ClmModel parsePayload(std::string_view payload) {
       readArray(reader, patch.pca.components);
       readArray(reader, patch.pca.variances);
       for (Eigen::VectorXf& alpha : patch.alpha) readArray(reader, alpha);
+      readExperts(reader, patch.experts);
+    }
+  }
+  if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
+    const Scheme scheme = model.scheme();
+    for (std::size_t v = 0; v < mirrorOf.size(); ++v) {
+      if (mirrorOf[v] < 0) continue;
+      ViewModel& view = model.views[v];
+      ViewModel rebuilt = mirrorView(model.views[static_cast<std::size_t>(mirrorOf[v])], scheme);
+      if (rebuilt.mirrored != view.mirrored || rebuilt.yawDeg != view.yawDeg ||
+          rebuilt.pitchDeg != view.pitchDeg || rebuilt.visible != view.visible) {
+        fieldError("views[" + std::to_string(v) + "]",
+                   "does not match the mirror image of view " + std::to_string(mirrorOf[v]));
+      }
+      view = std::move(rebuilt);
     }
   }
   model.validate();
@@ -326,9 +423,10 @@ std::uint32_t crc32(std::string_view bytes) {
 
 std::string serializeModel(const ClmModel& model) {
   model.validate();
+  const std::vector<int> mirrorOf = mirrorSources(model);
   std::string headerText;
   try {
-    headerText = headerJson(model).dump();
+    headerText = headerJson(model, mirrorOf).dump();
   } catch (const json::exception& e) {
     throw Error(std::string("model header: ") + e.what());
   }
@@ -338,12 +436,17 @@ std::string serializeModel(const ClmModel& model) {
   appendFloats(payload, model.shape.meanShape);
   appendFloats(payload, model.shape.modes);
   appendFloats(payload, model.shape.variances);
-  for (const ViewModel& view : model.views) {
-    for (const PatchModel& patch : view.scales) {
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    if (mirrorOf[v] >= 0) continue;
+    for (const PatchModel& patch : model.views[v].scales) {
       appendFloats(payload, patch.pca.mean);
       appendFloats(payload, patch.pca.components);
       appendFloats(payload, patch.pca.variances);
       for (const Eigen::VectorXf& alpha : patch.alpha) appendFloats(payload, alpha);
+      for (const PatchExpert& expert : patch.experts) {
+        appendFloats(payload, expert.weights);
+        appendFloats(payload, Eigen::Vector2f(expert.gain, expert.bias));
+      }
     }
   }
   std::string file(kMagic);
@@ -400,7 +503,7 @@ ClmModel parseModel(std::string_view bytes, const std::string& sourceName) {
   const std::string_view payload = bytes.substr(kHeaderBytes);
   if (crc32(payload) != checksum) throwInputError(source, "corrupt (checksum mismatch)");
   try {
-    return parsePayload(payload);
+    return parsePayload(payload, version);
   } catch (const Error& e) {
     throwInputError(source, e.what());
   } catch (const std::exception& e) {  // nlohmann type errors, bad_alloc

@@ -15,7 +15,9 @@
 
 namespace clm3d {
 
-inline constexpr std::uint32_t kModelFormatVersion = 1;
+// 2: patch experts per scale, mirrored views stored as a reference to their source view.
+// Version 1 files (no experts, every view stored) still load.
+inline constexpr std::uint32_t kModelFormatVersion = 2;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

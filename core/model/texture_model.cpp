@@ -95,6 +95,15 @@ PatchModel mirrorPatchModel(const PatchModel& source, const Scheme& scheme,
     if (alpha.size() != pixels) throw Error(where + ": alpha patch of the wrong size");
     mirrored.alpha.push_back(flipPatch(alpha, source.patchSize));
   }
+  if (!source.experts.empty()) {
+    if (source.experts.size() != source.landmarks.size()) {
+      throw Error(where + ": expert count does not match its landmarks");
+    }
+    for (const int entry : sourceEntry) {
+      mirrored.experts.push_back(
+          flipExpert(source.experts[static_cast<std::size_t>(entry)], source.patchSize));
+    }
+  }
   return mirrored;
 }
 

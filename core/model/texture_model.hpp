@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/model/patch_expert.hpp"
 #include "core/model/pca.hpp"
 #include "core/scheme/scheme.hpp"
 
@@ -18,12 +19,16 @@ struct PatchModel {                    // one view at one scale
   std::vector<int> landmarks;          // the visible landmarks of the view, ascending
   PcaModel pca;                        // D = landmarks.size() * patchSize^2
   std::vector<Eigen::VectorXf> alpha;  // per entry of `landmarks`: mean alpha patch, in [0, 1]
+  // Per entry of `landmarks`: the discriminative expert (empty vector: a model without experts,
+  // as every model before format version 2; only the template optimisers can use it).
+  std::vector<PatchExpert> experts;
 
   int patchPixels() const { return patchSize * patchSize; }
   // The slice of a concatenated vector (pca.mean, a component, a sample) for landmarks[entry].
   Eigen::Index offsetOf(int entry) const { return Eigen::Index(entry) * patchPixels(); }
   // Index into `landmarks` of scheme landmark i, -1 if this model does not hold it.
   int entryOf(int landmark) const;
+  bool hasExperts() const { return !experts.empty(); }
 };
 
 struct ViewModel {

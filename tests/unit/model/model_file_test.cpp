@@ -120,7 +120,7 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   std::string newer = good;
   writeU32(newer, 8, 7);
   EXPECT_EQ(parseError(newer),
-            "m.clm3d: format version 7 is newer than this clm3d (1); update clm3d");
+            "m.clm3d: format version 7 is newer than this clm3d (2); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
   EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
@@ -150,17 +150,99 @@ TEST(ModelFile, RejectsInconsistentContentWithAValidChecksum) {
                            good, payload.substr(0, 8) + garbled + payload.substr(8 + headerLength)))
                 .find("m.clm3d: "),
             std::string::npos);
-  // An array value out of range: an alpha of 2 (the last float of the file).
+  // An array value out of range: an alpha of 2 (the last float of the file: view 2 is the mirror
+  // image of view 0 and stored as a reference, so the last stored view is view 1).
   std::string arrays = payload;
   const float two = 2.0f;
   std::memcpy(arrays.data() + arrays.size() - 4, &two, 4);
-  EXPECT_NE(parseError(withPayload(good, arrays)).find("views[2].scales[1].alpha[3]"),
+  EXPECT_NE(parseError(withPayload(good, arrays)).find("views[1].scales[1].alpha[4]"),
             std::string::npos)
       << parseError(withPayload(good, arrays));
   // Arrays cut short but the checksum fixed.
   EXPECT_NE(
       parseError(withPayload(good, payload.substr(0, payload.size() - 4))).find("bytes of arrays"),
       std::string::npos);
+}
+
+// The tiny model with a patch expert per landmark (random zero-mean weights), its mirrored view
+// rebuilt so it stays the exact mirror image of view 0.
+ClmModel tinyModelWithExperts() {
+  ClmModel model = test::makeTinyModel();
+  float value = 0.25f;
+  for (ViewModel& view : model.views) {
+    for (PatchModel& patches : view.scales) {
+      patches.experts.clear();
+      for (std::size_t e = 0; e < patches.landmarks.size(); ++e) {
+        PatchExpert expert;
+        expert.weights = Eigen::VectorXf::LinSpaced(patches.patchPixels(), -1.0f, value);
+        expert.weights.array() -= expert.weights.mean();
+        expert.gain = 2.0f + value;
+        expert.bias = -value;
+        value += 0.125f;
+        patches.experts.push_back(expert);
+      }
+    }
+  }
+  model.views[2] = mirrorView(model.views[0], model.scheme());
+  return model;
+}
+
+TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
+  const ClmModel model = tinyModelWithExperts();
+  const std::string bytes = serializeModel(model);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  ASSERT_EQ(loaded.views.size(), 3u);
+  for (std::size_t v = 0; v < 3; ++v) {
+    EXPECT_EQ(loaded.views[v].mirrored, model.views[v].mirrored);
+    EXPECT_EQ(loaded.views[v].visible, model.views[v].visible);
+    for (std::size_t s = 0; s < 2; ++s) {
+      const PatchModel& a = loaded.views[v].scales[s];
+      const PatchModel& b = model.views[v].scales[s];
+      EXPECT_EQ(a.pca.components, b.pca.components);
+      ASSERT_EQ(a.experts.size(), b.experts.size());
+      for (std::size_t e = 0; e < a.experts.size(); ++e) {
+        EXPECT_EQ(a.experts[e].weights, b.experts[e].weights);
+        EXPECT_EQ(a.experts[e].gain, b.experts[e].gain);
+        EXPECT_EQ(a.experts[e].bias, b.experts[e].bias);
+      }
+    }
+  }
+  // A mirrored view that is not the exact mirror image is stored in full: the reference saved
+  // the mirrored view's arrays.
+  ClmModel edited = model;
+  edited.views[2].scales[0].experts[0].bias += 1.0f;
+  const std::string full = serializeModel(edited);
+  EXPECT_GT(full.size(), bytes.size() + 4 * 2 * (4 + 4 * 16));
+  EXPECT_EQ(parseModel(full, "m.clm3d").views[2].scales[0].experts[0].bias,
+            edited.views[2].scales[0].experts[0].bias);
+}
+
+// A file of format version 1 (no experts, every view stored, no "experts" or "mirrorOf" keys)
+// still loads: version 1 is what clm3d wrote before the patch experts.
+TEST(ModelFile, Version1FilesStillLoad) {
+  ClmModel model = test::makeTinyModel();
+  model.views[2].scales[0].alpha[0][0] *= 0.5f;  // not an exact mirror: stored in full
+  const std::string v2 = serializeModel(model);
+  std::uint64_t headerLength = 0;
+  std::memcpy(&headerLength, v2.data() + 24, 8);
+  std::string header = v2.substr(32, headerLength);
+  // nlohmann::json writes keys in sorted order, so each new key is followed by a comma.
+  for (const std::string key : {"\"experts\":false,", "\"mirrorOf\":-1,"}) {
+    for (auto at = header.find(key); at != std::string::npos; at = header.find(key)) {
+      header.erase(at, key.size());
+    }
+  }
+  ASSERT_EQ(header.find("mirrorOf"), std::string::npos);
+  std::string payload(8, '\0');
+  for (int i = 0; i < 8; ++i)
+    payload[static_cast<std::size_t>(i)] = static_cast<char>(header.size() >> (8 * i));
+  payload += header + v2.substr(32 + headerLength);
+  std::string v1 = withPayload(v2, payload);
+  writeU32(v1, 8, 1);
+  const ClmModel loaded = parseModel(v1, "old.clm3d");
+  EXPECT_EQ(serializeModel(loaded), v2);  // read as version 1, written as version 2
+  EXPECT_FALSE(loaded.views[0].scales[0].hasExperts());
 }
 
 TEST(ModelFile, SavingAnInvalidModelOrToABadPathFails) {
