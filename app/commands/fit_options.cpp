@@ -17,6 +17,9 @@ FitSettings FitOptions::settings() const {
   result.optimiserSettings.seed = seed;
   result.textureModes = textureModes;
   result.optimiserSettings.shapePrior = shapePrior;
+  result.optimiserSettings.rlmsRadius = rlmsRadius;
+  result.optimiserSettings.rlmsSigma = rlmsSigma;
+  result.optimiserSettings.rlmsRegularisation = rlmsRegularisation;
   return result;
 }
 
@@ -57,6 +60,21 @@ void addFitOptions(CLI::App& command, FitOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
   command.add_option("--seed", options.seed, "random seed (condensation)")->capture_default_str();
+  command
+      .add_option("--rlms-radius", options.rlmsRadius,
+                  "rlms: search window radius around each landmark (pixels of each scale)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 32));
+  command
+      .add_option("--rlms-sigma", options.rlmsSigma,
+                  "rlms: standard deviation of the mean-shift kernel (pixels of each scale)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 32.0));
+  command
+      .add_option("--rlms-regularisation", options.rlmsRegularisation,
+                  "rlms: weight of the shape prior (squared pixels)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
 }
 
 FitState startFromPointsFile(const ClmModel& model, const Camera& camera,

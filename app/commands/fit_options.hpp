@@ -23,6 +23,9 @@ struct FitOptions {
   std::uint64_t seed = 1;
   int textureModes = 0;
   double shapePrior = OptimiserSettings{}.shapePrior;
+  int rlmsRadius = OptimiserSettings{}.rlmsRadius;
+  double rlmsSigma = OptimiserSettings{}.rlmsSigma;
+  double rlmsRegularisation = OptimiserSettings{}.rlmsRegularisation;
 
   FitSettings settings() const;
   DetectorKind detectorKind() const;  // InputError for an unknown name

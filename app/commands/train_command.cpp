@@ -79,8 +79,23 @@ void runTrain(TrainArgs& args) {
     std::cerr << line.str() << '\n';
   };
   try {
+    std::vector<PhotoPlacement> placements;
     ClmModel model = trainFromManifest(args.dataset, args.settings, std::string(CLM3D_VERSION),
-                                       progress, &token);
+                                       progress, &token, &placements);
+    if (!placements.empty()) {
+      int used = 0;
+      int copies = 0;
+      for (const PhotoPlacement& placed : placements) {
+        used += placed.samples > 0 ? 1 : 0;
+        copies += placed.samples;
+        if (!placed.skipped.empty()) {
+          std::cerr << "train: photo " << placed.id << " skipped: " << placed.skipped << '\n';
+        }
+      }
+      std::cerr << "train: " << used << " of " << placements.size() << " photos used (" << copies
+                << " samples with the mirror images); a model trained on photos inherits their "
+                   "licence terms\n";
+    }
     token.throwIfCancelled();
     std::cerr << "train: saving\n";
     saveModel(model, args.out);
@@ -166,6 +181,13 @@ void addTrainCommand(CLI::App& root) {
                    "the view (1 = keep every landmark: hidden-point removal off)")
       ->default_val(0.5)
       ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--expert-radius", args->settings.expertRadius,
+                   "Train a discriminative patch expert per landmark, view and scale from "
+                   "displacements of up to this many pixels (0 = none: a model for the template "
+                   "optimisers only; rlms needs experts)")
+      ->default_val(args->settings.expertRadius)
+      ->check(CLI::Range(0, 16));
   command->callback([args] { runTrain(*args); });
 }
 

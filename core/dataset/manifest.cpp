@@ -295,6 +295,24 @@ AugmentationSettings parseAugmentation(Fields& f) {
   return a;
 }
 
+PhotoSource parsePhotos(Fields& f) {
+  PhotoSource source;
+  const bool folder = f.has("folder");
+  const bool list = f.has("list");
+  if (folder == list) f.fail(f.name("folder"), "give exactly one of folder and list");
+  if (folder) {
+    source.folder = f.path("folder", /*directoryAllowed=*/true);
+    if (!fs::is_directory(source.folder)) {
+      f.fail(f.name("folder"), "not a folder: " + source.folder.string());
+    }
+  } else {
+    source.list = f.path("list");
+  }
+  source.limit = static_cast<int>(f.integer("limit", 0, 0, 1000000));
+  source.jaw = f.boolean("jaw", false);
+  return source;
+}
+
 MakeHumanSource parseMakeHuman(Fields& f) {
   MakeHumanSource source;
   source.root = f.path("root", /*directoryAllowed=*/true);
@@ -470,6 +488,12 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
               f.name("seed_offset"));
       }
     }
+  }
+  const json& photos = arrayField(top, "photos");
+  for (std::size_t i = 0; i < photos.size(); ++i) {
+    Fields f(photos[i], "photos[" + std::to_string(i) + "]", file, folder);
+    manifest.photos.push_back(parsePhotos(f));
+    f.rejectUnknown();
   }
   top.rejectUnknown();
 

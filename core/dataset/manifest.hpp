@@ -73,6 +73,19 @@ struct IctTexturedSource {
   std::uint64_t seedOffset = 0;          // added to the sampling seed
 };
 
+// Annotated photos (docs/real-faces.md): every image of a folder, or every image a text file lists
+// (one path per line, relative to the list's folder; blank lines and # comments skipped), each
+// with a landmark file of the same stem beside it (.pts, .ljson or .csv; 68-point iBUG files are
+// converted to the scheme). Each photo is placed in a view by the 3D pose of its points.
+struct PhotoSource {
+  std::filesystem::path folder;  // absolute; empty when `list` is given
+  std::filesystem::path list;    // absolute; empty when `folder` is given
+  int limit = 0;                 // at most this many photos, the first in name order (0 = all)
+  // Trust the cheek and chin-side points a 68-point file's jaw contour gives (by default they
+  // train nothing: the contour slides along the jaw, so they have no fixed anatomical place).
+  bool jaw = false;
+};
+
 struct DatasetManifest {
   std::filesystem::path file;       // where it was read from (for messages)
   std::string scheme = "thesis25";  // built-in name or an absolute path to a scheme JSON
@@ -81,6 +94,7 @@ struct DatasetManifest {
   std::vector<IctSource> ict;
   std::vector<IctTexturedSource> ictTextured;
   std::vector<MakeHumanSource> makehuman;
+  std::vector<PhotoSource> photos;
   AugmentationSettings augmentation;  // appearance augmentation of the training renders
   std::string name;  // for provenance; defaults to the file's stem
 };

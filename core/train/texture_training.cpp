@@ -10,20 +10,26 @@
 #include <thread>
 
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/render/offscreen_renderer.hpp"
+#include "core/train/expert_training.hpp"
 #include "core/train/framing_landmarks.hpp"
 #include "core/train/training_sample.hpp"
 
 namespace clm3d {
 namespace {
 
-// What the renders of one view collect: columns are samples in (subject, sample) order, so the
-// result is the same whichever thread rendered them.
+// What the renders and photos of one view collect: columns are the renders in (subject, sample)
+// order, so the result is the same whichever thread rendered them, then the view's photos in
+// input order.
 struct ViewSamples {
-  std::vector<Eigen::MatrixXf> grey;   // per scale: (P * n) x N
-  std::vector<Eigen::MatrixXf> alpha;  // per scale: (P * n) x N
-  std::vector<int> visibleCount;       // per landmark
-  std::vector<int> presentCount;       // per landmark (samples where the landmark exists)
+  std::vector<Eigen::MatrixXf> grey;     // per scale: (P * n) x (N + photos)
+  std::vector<Eigen::MatrixXf> alpha;    // per scale: (P * n) x N (renders only)
+  std::vector<Eigen::MatrixXf> regions;  // per scale: (Q * n) x (N + photos), experts only
+  std::vector<std::vector<bool>> has;    // per column: landmarks whose patch is real
+  std::vector<std::vector<bool>> usable;  // per column: landmarks that train the experts
+  std::vector<int> visibleCount;         // per landmark (renders only)
+  std::vector<int> presentCount;         // per landmark (renders where the landmark exists)
 };
 
 int threadCount(const TrainSettings& settings, int jobs) {
@@ -32,15 +38,15 @@ int threadCount(const TrainSettings& settings, int jobs) {
   return std::clamp(threads, 1, std::max(1, jobs));
 }
 
-// Replaces the patches of a landmark in the columns where its subject lacks it (sampled there at
-// an imputed or no position) by the mean of the columns that have it, so that a missing point
-// neither drags the patch mean towards a wrong appearance nor adds variance of its own.
+// Replaces the patches of a landmark in the columns that lack it (a subject without the point,
+// sampled at an imputed or no position; a photo whose point is not trusted) by the mean of the
+// columns that have it, so that a missing point neither drags the patch mean towards a wrong
+// appearance nor adds variance of its own.
 void fillMissingPatches(Eigen::MatrixXf& patches, int landmark, int pixels,
-                        const std::vector<std::vector<bool>>& subjectHas, int samplesPerView) {
+                        const std::vector<std::vector<bool>>& columnHas) {
   const Eigen::Index row = Eigen::Index(landmark) * pixels;
   const auto has = [&](Eigen::Index column) {
-    return subjectHas[static_cast<std::size_t>(column / samplesPerView)]
-                     [static_cast<std::size_t>(landmark)];
+    return columnHas[static_cast<std::size_t>(column)][static_cast<std::size_t>(landmark)];
   };
   Eigen::VectorXf mean = Eigen::VectorXf::Zero(pixels);
   int count = 0;
@@ -68,11 +74,83 @@ PatchModel buildPatchModel(const ViewSamples& samples, const std::vector<int>& l
   for (std::size_t e = 0; e < landmarks.size(); ++e) {
     const Eigen::Index source = Eigen::Index(landmarks[e]) * pixels;
     data.middleRows(Eigen::Index(e) * pixels, pixels) = samples.grey[s].middleRows(source, pixels);
-    Eigen::VectorXf meanAlpha = samples.alpha[s].middleRows(source, pixels).rowwise().mean();
+    const Eigen::VectorXf meanAlpha =
+        samples.alpha[s].middleRows(source, pixels).rowwise().mean();
     model.alpha.push_back(meanAlpha.cwiseMax(0.0f).cwiseMin(1.0f));
   }
   model.pca = fitPca(data, settings.textureVariance, settings.textureMaxModes);
   return model;
+}
+
+// One expert per (rendered view, scale, visible landmark), on a pool of threads.
+void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& models,
+                  const std::vector<int>& rendered, const TrainSettings& settings,
+                  const ProgressCallback& progress, const CancelToken* cancel) {
+  struct Job {
+    int view, scale, entry;
+  };
+  std::vector<Job> jobs;
+  for (const int v : rendered) {
+    const ViewModel& model = models[static_cast<std::size_t>(v)];
+    for (int s = 0; s < settings.scales; ++s) {
+      const PatchModel& patches = model.scales[static_cast<std::size_t>(s)];
+      models[static_cast<std::size_t>(v)].scales[static_cast<std::size_t>(s)].experts.resize(
+          patches.landmarks.size());
+      for (std::size_t e = 0; e < patches.landmarks.size(); ++e) {
+        jobs.push_back({v, s, static_cast<int>(e)});
+      }
+    }
+  }
+  const int regionSize = settings.patchSize + 2 * settings.expertRadius;
+  const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> done{0};
+  std::atomic<bool> stop{false};
+  std::mutex errorMutex;
+  std::exception_ptr error;
+  const auto worker = [&] {
+    try {
+      for (std::size_t j = next++; j < jobs.size() && !stop; j = next++) {
+        if (cancel) cancel->throwIfCancelled();
+        const Job& job = jobs[j];
+        const ViewSamples& c = collected[static_cast<std::size_t>(job.view)];
+        PatchModel& patches = models[static_cast<std::size_t>(job.view)]
+                                  .scales[static_cast<std::size_t>(job.scale)];
+        const int landmark = patches.landmarks[static_cast<std::size_t>(job.entry)];
+        const Eigen::MatrixXf& all = c.regions[static_cast<std::size_t>(job.scale)];
+        std::vector<Eigen::Index> columns;
+        for (std::size_t col = 0; col < c.usable.size(); ++col) {
+          if (c.usable[col][static_cast<std::size_t>(landmark)]) {
+            columns.push_back(static_cast<Eigen::Index>(col));
+          }
+        }
+        if (columns.empty()) continue;  // never seen: the expert stays empty, validate() says so
+        Eigen::MatrixXf regions(regionPixels, static_cast<Eigen::Index>(columns.size()));
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+          regions.col(static_cast<Eigen::Index>(k)) =
+              all.block(Eigen::Index(landmark) * regionPixels, columns[k], regionPixels, 1);
+        }
+        ExpertTrainingSettings expertSettings;
+        expertSettings.patchSize = settings.patchSize;
+        expertSettings.radius = settings.expertRadius;
+        expertSettings.ridge = settings.expertRidge;
+        expertSettings.seed = mixKey(settings.seed, static_cast<std::uint64_t>(j));
+        patches.experts[static_cast<std::size_t>(job.entry)] =
+            trainPatchExpert(regions, expertSettings);
+        const int finished = ++done;
+        if (progress) progress(static_cast<double>(finished) / jobs.size(), "experts");
+      }
+    } catch (...) {
+      std::lock_guard lock(errorMutex);
+      if (!error) error = std::current_exception();
+      stop = true;
+    }
+  };
+  const int threads = threadCount(settings, static_cast<int>(jobs.size()));
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (std::thread& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
 }
 
 }  // namespace
@@ -81,7 +159,8 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
                                           const Scheme& scheme, const TrainSettings& settings,
                                           const ProgressCallback& progress,
                                           const CancelToken* cancel,
-                                          const std::vector<LandmarkSet>& framingDonors) {
+                                          const std::vector<LandmarkSet>& framingDonors,
+                                          const std::vector<PhotoSample>& photos) {
   settings.validate();
   if (subjects.empty()) throw InputError("training: no textured subjects to render");
   const int n = scheme.size();
@@ -129,15 +208,51 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
 
   const int samplesPerView = settings.samplesPerView;
   const int pixels = settings.patchSize * settings.patchSize;
+  const int regionSize = settings.patchSize + 2 * settings.expertRadius;
+  const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
+  const bool experts = settings.expertRadius > 0;
   const auto subjectCount = static_cast<int>(subjects.size());
   const Eigen::Index columns = Eigen::Index(subjectCount) * samplesPerView;
+  std::vector<std::vector<const PhotoSample*>> viewPhotos(views.size());
+  for (const PhotoSample& photo : photos) {
+    if (photo.view < 0 || photo.view >= static_cast<int>(views.size()) ||
+        mirrorSource[static_cast<std::size_t>(photo.view)] >= 0) {
+      throw Error("training: photo '" + photo.id + "' is assigned to a view that is not rendered");
+    }
+    if (static_cast<int>(photo.patches.visible.size()) != n ||
+        static_cast<int>(photo.patches.grey.size()) != settings.scales ||
+        (experts && static_cast<int>(photo.patches.regions.size()) != settings.scales)) {
+      throw Error("training: photo '" + photo.id + "' has patches of the wrong shape");
+    }
+    viewPhotos[static_cast<std::size_t>(photo.view)].push_back(&photo);
+  }
   std::vector<ViewSamples> collected(views.size());
   std::vector<std::unique_ptr<std::mutex>> viewMutex;
   for (int v : rendered) {
     ViewSamples& c = collected[static_cast<std::size_t>(v)];
+    const auto& inView = viewPhotos[static_cast<std::size_t>(v)];
+    const Eigen::Index all = columns + static_cast<Eigen::Index>(inView.size());
     for (int s = 0; s < settings.scales; ++s) {
-      c.grey.emplace_back(Eigen::Index(pixels) * n, columns);
+      c.grey.emplace_back(Eigen::Index(pixels) * n, all);
       c.alpha.emplace_back(Eigen::Index(pixels) * n, columns);
+      if (experts) c.regions.emplace_back(regionPixels * n, all);
+    }
+    c.has.assign(static_cast<std::size_t>(all), std::vector<bool>(static_cast<std::size_t>(n)));
+    c.usable = c.has;
+    for (Eigen::Index col = 0; col < columns; ++col) {
+      c.has[static_cast<std::size_t>(col)] =
+          subjectHas[static_cast<std::size_t>(col / samplesPerView)];
+    }
+    for (std::size_t k = 0; k < inView.size(); ++k) {
+      const auto col = static_cast<Eigen::Index>(columns + static_cast<Eigen::Index>(k));
+      const SamplePatches& patches = inView[k]->patches;
+      c.has[static_cast<std::size_t>(col)] = patches.visible;
+      c.usable[static_cast<std::size_t>(col)] = patches.visible;
+      for (int s = 0; s < settings.scales; ++s) {
+        const auto level = static_cast<std::size_t>(s);
+        c.grey[level].col(col) = patches.grey[level].reshaped();
+        if (experts) c.regions[level].col(col) = patches.regions[level].reshaped();
+      }
     }
     c.visibleCount.assign(static_cast<std::size_t>(n), 0);
     c.presentCount.assign(static_cast<std::size_t>(n), 0);
@@ -173,16 +288,22 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
                 const auto level = static_cast<std::size_t>(s);
                 target.grey[level].col(column) = patches.grey[level].reshaped();
                 target.alpha[level].col(column) = patches.alpha[level].reshaped();
+                if (experts) target.regions[level].col(column) = patches.regions[level].reshaped();
               }
               for (int i = 0; i < n; ++i) {
                 const auto li = static_cast<std::size_t>(i);
                 const bool present = input.landmarks->has(i);  // not imputed for framing
                 target.visibleCount[li] += present && patches.visible[li] ? 1 : 0;
                 target.presentCount[li] += present ? 1 : 0;
+                target.usable[static_cast<std::size_t>(column)][li] =
+                    present && patches.visible[li];
               }
             }
             const int finished = ++done;
-            if (progress) progress(static_cast<double>(finished) / totalRenders * 0.9, "rendering");
+            if (progress) {
+              progress(static_cast<double>(finished) / totalRenders * (experts ? 0.8 : 0.9),
+                       "rendering");
+            }
           }
         }
       }
@@ -206,11 +327,10 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     const auto vi = static_cast<std::size_t>(v);
     ViewSamples& c = collected[vi];
     for (int i = 0; i < n; ++i) {
-      if (c.presentCount[static_cast<std::size_t>(i)] == columns) continue;
       for (int s = 0; s < settings.scales; ++s) {
         const auto level = static_cast<std::size_t>(s);
-        fillMissingPatches(c.grey[level], i, pixels, subjectHas, samplesPerView);
-        fillMissingPatches(c.alpha[level], i, pixels, subjectHas, samplesPerView);
+        fillMissingPatches(c.grey[level], i, pixels, c.has);
+        fillMissingPatches(c.alpha[level], i, pixels, c.has);  // the first N columns: renders
       }
     }
     ViewModel& model = models[vi];
@@ -236,8 +356,19 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     for (int s = 0; s < settings.scales; ++s) {
       model.scales.push_back(buildPatchModel(c, visibleLandmarks, s, settings));
     }
-    if (progress) progress(0.9 + 0.1 * ++built / static_cast<double>(rendered.size()), "pca");
+    if (progress) {
+      progress((experts ? 0.8 : 0.9) + (experts ? 0.05 : 0.1) * ++built /
+                                           static_cast<double>(rendered.size()),
+               "pca");
+    }
   }
+  if (experts) {
+    const auto expertProgress = [&](double fraction, std::string_view stage) {
+      if (progress) progress(0.85 + 0.15 * fraction, stage);
+    };
+    trainExperts(collected, models, rendered, settings, expertProgress, cancel);
+  }
+  collected.clear();
   for (std::size_t v = 0; v < views.size(); ++v) {
     if (mirrorSource[v] < 0) continue;
     models[v] = mirrorView(models[static_cast<std::size_t>(mirrorSource[v])], scheme);

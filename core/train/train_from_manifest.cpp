@@ -1,5 +1,6 @@
 // trainFromManifest: the dataset stage's loaders followed by trainModel.
 #include "core/dataset/manifest.hpp"
+#include "core/dataset/training_photos.hpp"
 #include "core/dataset/training_subjects.hpp"
 #include "core/train/trainer.hpp"
 
@@ -7,7 +8,8 @@ namespace clm3d {
 
 ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
                            const TrainSettings& requested, const std::string& toolVersion,
-                           const ProgressCallback& progress, const CancelToken* cancel) {
+                           const ProgressCallback& progress, const CancelToken* cancel,
+                           std::vector<PhotoPlacement>* placements) {
   requested.validate();
   const DatasetManifest manifest = loadManifest(manifestPath);
   TrainSettings settings = requested;
@@ -30,12 +32,13 @@ ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
     input.subjects.push_back({subject.id, &subject.mesh, &subject.landmarks});
   }
   input.shapeOnly = std::move(shapeOnly);
+  input.photos = loadTrainingPhotos(manifest);
   input.datasetName = manifest.name + " (" + manifest.file.string() + ")";
   input.toolVersion = toolVersion;
   const auto trainingProgress = [&](double fraction, std::string_view stage) {
     if (progress) progress(0.3 + 0.7 * fraction, stage);
   };
-  return trainModel(input, settings, trainingProgress, cancel);
+  return trainModel(input, settings, trainingProgress, cancel, placements);
 }
 
 }  // namespace clm3d

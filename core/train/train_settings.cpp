@@ -40,6 +40,8 @@ void TrainSettings::validate() const {
   require(hiddenShare >= 0 && hiddenShare <= 1,
           "hidden share must be in [0, 1] (1 keeps every landmark)");
   require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
+  require(expertRadius >= 0 && expertRadius <= 16, "expert radius must be 0..16 pixels");
+  require(expertRidge > 0 && expertRidge <= 100, "expert ridge must be in (0, 100]");
   require(threads >= 0 && threads <= 64, "threads must be 0..64");
   const PerturbationSettings& p = perturbation;
   require(p.rotationDeg >= 0 && p.rotationDeg <= 20, "rotation jitter must be 0..20 degrees");
@@ -112,6 +114,9 @@ std::string TrainSettings::toJson() const {
   j["single_view"] = singleView;
   j["hidden_share"] = hiddenShare;
   j["supersample"] = supersample;
+  if (expertRadius > 0) {  // absent when off, so models trained without experts are unchanged
+    j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}};
+  }
   j["render_size"] = renderSize();
   j["greyscale"] = true;
   if (augmentation.any()) {  // absent when off, so models trained without it are unchanged

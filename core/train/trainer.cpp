@@ -32,7 +32,8 @@ std::string schemeJsonFor(const std::string& nameOrPath) {
 }
 
 ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
-                    const ProgressCallback& progress, const CancelToken* cancel) {
+                    const ProgressCallback& progress, const CancelToken* cancel,
+                    std::vector<PhotoPlacement>* placements) {
   settings.validate();
   const Scheme scheme = Scheme::fromJson(input.schemeJson, "training scheme");
   if (cancel) cancel->throwIfCancelled();
@@ -49,11 +50,20 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
   if (settings.singleView) shapeSettings.dims = 2;
   model.shape = buildShapeModel(shapes, scheme, shapeSettings);
 
+  const double photoShare = input.photos.empty() ? 0.0 : 0.1;
+  std::vector<PhotoSample> photoSamples;
+  if (!input.photos.empty()) {
+    const auto photoProgress = [&](double fraction, std::string_view stage) {
+      if (progress) progress(0.02 + photoShare * fraction, stage);
+    };
+    photoSamples = preparePhotoSamples(input.photos, input.schemeJson, model.shape, settings,
+                                       placements, photoProgress, cancel);
+  }
   const auto textureProgress = [&](double fraction, std::string_view stage) {
-    if (progress) progress(0.02 + 0.98 * fraction, stage);
+    if (progress) progress(0.02 + photoShare + (0.98 - photoShare) * fraction, stage);
   };
   model.views = trainTextureModels(input.subjects, scheme, settings, textureProgress, cancel,
-                                   input.shapeOnly);
+                                   input.shapeOnly, photoSamples);
   model.singleView = settings.singleView;
   model.patchRatio = settings.patchRatio;
   model.settingsJson = settings.toJson();
@@ -63,6 +73,11 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
   model.provenance.seed = settings.seed;
   model.provenance.notes = std::to_string(input.subjects.size()) + " textured subjects, " +
                            std::to_string(input.shapeOnly.size()) + " shape-only sets";
+  if (!input.photos.empty()) {
+    model.provenance.notes += ", " + std::to_string(photoSamples.size()) + " photo samples from " +
+                              std::to_string(input.photos.size()) +
+                              " annotated photos (the model inherits the photos' licence terms)";
+  }
   model.validate();
   return model;
 }

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "core/common/progress.hpp"
+#include "core/dataset/training_photos.hpp"
 #include "core/model/clm_model.hpp"
+#include "core/train/photo_samples.hpp"
 #include "core/train/texture_training.hpp"
 #include "core/train/train_settings.hpp"
 
@@ -19,6 +21,7 @@ struct TrainingInput {
   std::string schemeJson;  // the scheme's JSON text (see schemeJsonFor)
   std::vector<TrainingSubject> subjects;
   std::vector<LandmarkSet> shapeOnly;  // extra shapes for the shape model (no texture)
+  std::vector<TrainingPhoto> photos;   // annotated photos for the texture models and experts
   std::string datasetName;             // provenance
   std::string toolVersion;             // provenance
 };
@@ -29,12 +32,16 @@ std::string schemeJsonFor(const std::string& nameOrPath);
 // Shape model from every subject's landmarks plus the shape-only sets; texture models from
 // renders of the subjects. Progress stages: "shape", "rendering", "pca". settings.singleView
 // makes the 2D baseline (one frontal view, 2D shape model).
+// Progress stage "photos" when there are photos. `placements` (optional) tells where each photo
+// went or why it was skipped.
 ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
-                    const ProgressCallback& progress = {}, const CancelToken* cancel = nullptr);
+                    const ProgressCallback& progress = {}, const CancelToken* cancel = nullptr,
+                    std::vector<PhotoPlacement>* placements = nullptr);
 
 // Loads the manifest's subjects and shape samples (stage "loading") and trains on them.
 ClmModel trainFromManifest(const std::filesystem::path& manifest, const TrainSettings& settings,
                            const std::string& toolVersion, const ProgressCallback& progress = {},
-                           const CancelToken* cancel = nullptr);
+                           const CancelToken* cancel = nullptr,
+                           std::vector<PhotoPlacement>* placements = nullptr);
 
 }  // namespace clm3d

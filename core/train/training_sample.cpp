@@ -7,6 +7,7 @@
 
 #include "core/common/error.hpp"
 #include "core/common/split_mix_random.hpp"
+#include "core/fit/response_map.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/image/patch_sampling.hpp"
 #include "core/image/pyramid.hpp"
@@ -114,6 +115,47 @@ TrainingImage renderTrainingImage(OffscreenRenderer& renderer, const LandmarkSet
   return out;
 }
 
+SamplePatches extractPatches(const cv::Mat& grey, const cv::Mat& alpha,
+                             const Eigen::Matrix2Xd& points, const std::vector<bool>& has,
+                             const TrainSettings& settings) {
+  const std::vector<cv::Mat> greyPyramid = gaussianPyramid(grey, settings.scales);
+  std::vector<cv::Mat> alphaPyramid;
+  if (!alpha.empty()) alphaPyramid = gaussianPyramid(alpha, settings.scales);
+  const auto n = static_cast<int>(points.cols());
+  const int size = settings.patchSize;
+  const int regionSize = size + 2 * settings.expertRadius;
+  SamplePatches patches;
+  patches.visible = has;
+  for (int s = 0; s < settings.scales; ++s) {
+    patches.grey.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
+    if (!alpha.empty()) patches.alpha.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
+    if (settings.expertRadius > 0) {
+      patches.regions.emplace_back(Eigen::MatrixXf::Zero(regionSize * regionSize, n));
+    }
+  }
+  cv::Mat region;
+  for (int i = 0; i < n; ++i) {
+    if (!has[static_cast<std::size_t>(i)]) continue;
+    for (int s = 0; s < settings.scales; ++s) {
+      const auto level = static_cast<std::size_t>(s);
+      const Eigen::Vector2d at = toPyramidLevel(points.col(i), s);
+      auto patch = patches.grey[level].col(i);
+      samplePatch(greyPyramid[level], at, size, patch);
+      normalisePatch(patch);
+      if (!alpha.empty()) samplePatch(alphaPyramid[level], at, size, patches.alpha[level].col(i));
+      if (settings.expertRadius > 0) {
+        sampleRegion(greyPyramid[level], at, 0.0, regionSize, region);
+        auto out = patches.regions[level].col(i);
+        for (int r = 0; r < regionSize; ++r) {
+          const float* row = region.ptr<float>(r);
+          for (int c = 0; c < regionSize; ++c) out[r * regionSize + c] = row[c];
+        }
+      }
+    }
+  }
+  return patches;
+}
+
 SamplePatches renderSample(OffscreenRenderer& renderer, const LandmarkSet& landmarks,
                            std::pair<int, int> eyes, const SampleSpec& spec,
                            const TrainSettings& settings) {
@@ -125,30 +167,18 @@ SamplePatches renderSample(OffscreenRenderer& renderer, const LandmarkSet& landm
   cv::extractChannel(result.bgra, alpha8, 3);
   cv::Mat alpha;
   alpha8.convertTo(alpha, CV_32F, 1.0 / 255.0);
-  const std::vector<cv::Mat> greyPyramid =
-      gaussianPyramid(toGreyFloat(training.image), settings.scales);
-  const std::vector<cv::Mat> alphaPyramid = gaussianPyramid(alpha, settings.scales);
-
   const int n = landmarks.size();
-  const int size = settings.patchSize;
-  SamplePatches patches;
-  patches.visible.assign(static_cast<std::size_t>(n), false);
-  for (int s = 0; s < settings.scales; ++s) {
-    patches.grey.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
-    patches.alpha.emplace_back(Eigen::MatrixXf::Zero(size * size, n));
-  }
+  Eigen::Matrix2Xd points = Eigen::Matrix2Xd::Zero(2, n);
+  std::vector<bool> has(static_cast<std::size_t>(n), false);
   for (int i = 0; i < n; ++i) {
     if (!landmarks.has(i)) continue;
-    const Eigen::Vector3d model = landmarks.point(i);
-    patches.visible[static_cast<std::size_t>(i)] = result.isVisible(model);
-    const Eigen::Vector2d pixel = projectPoint(model, frame.pose, frame.camera);
-    for (int s = 0; s < settings.scales; ++s) {
-      const auto level = static_cast<std::size_t>(s);
-      const Eigen::Vector2d at = toPyramidLevel(pixel, s);
-      auto grey = patches.grey[level].col(i);
-      samplePatch(greyPyramid[level], at, size, grey);
-      normalisePatch(grey);
-      samplePatch(alphaPyramid[level], at, size, patches.alpha[level].col(i));
+    has[static_cast<std::size_t>(i)] = true;
+    points.col(i) = projectPoint(landmarks.point(i), frame.pose, frame.camera);
+  }
+  SamplePatches patches = extractPatches(toGreyFloat(training.image), alpha, points, has, settings);
+  for (int i = 0; i < n; ++i) {
+    if (has[static_cast<std::size_t>(i)]) {
+      patches.visible[static_cast<std::size_t>(i)] = result.isVisible(landmarks.point(i));
     }
   }
   return patches;

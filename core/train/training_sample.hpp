@@ -44,8 +44,20 @@ SampleFrame frameSample(const LandmarkSet& landmarks, std::pair<int, int> eyes,
 struct SamplePatches {
   std::vector<bool> visible;           // per landmark (missing landmarks are not visible)
   std::vector<Eigen::MatrixXf> grey;   // per scale: patchSize^2 x landmarks, each normalised
-  std::vector<Eigen::MatrixXf> alpha;  // per scale: patchSize^2 x landmarks, in [0, 1]
+  std::vector<Eigen::MatrixXf> alpha;  // per scale: patchSize^2 x landmarks, in [0, 1]; empty
+                                       // for photos (no coverage)
+  // Per scale, when settings.expertRadius > 0: (patchSize + 2 radius)^2 x landmarks raw grey
+  // regions (sampleRegion, upright) around each landmark, for the patch experts.
+  std::vector<Eigen::MatrixXf> regions;
 };
+
+// The patches of `points` (level-0 pixels, 2 x landmarks) in a grey CV_32F image and, when
+// `alpha` is not empty, its coverage: every scale of a Gaussian pyramid, landmarks with
+// has[i] false left as zeros and not visible; `visible` is `has` (callers that know better, the
+// renders' depth test, overwrite it).
+SamplePatches extractPatches(const cv::Mat& grey, const cv::Mat& alpha,
+                             const Eigen::Matrix2Xd& points, const std::vector<bool>& has,
+                             const TrainSettings& settings);
 
 // The render of a sample (with cast shadows if drawn) and the image its grey patches are taken
 // from: the render itself, or with augmentation the 8-bit BGR image after augmentImage.

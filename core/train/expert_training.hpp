@@ -1,0 +1,31 @@
+// Trains one discriminative patch expert (core/model/patch_expert.hpp) from regions around the
+// true landmark position: patches at the true position and its 8 neighbours against displaced
+// patches up to the region's radius. A ridge regression of the normalised patch onto a Gaussian
+// of the displacement (1 pixel SD) gives the filter; a logistic fit of its scores (true position
+// against displacements of 2 pixels or more, the two classes weighted equally) gives gain and
+// bias. Closed form and deterministic, so training time is predictable and models reproducible.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "core/model/patch_expert.hpp"
+
+namespace clm3d {
+
+struct ExpertTrainingSettings {
+  int patchSize = 20;
+  int radius = 6;              // regions are patchSize + 2 radius pixels square
+  int negativesPerRegion = 16;  // displaced patches drawn per region (2..radius pixels away)
+  double ridge = 0.1;          // ridge weight relative to the mean diagonal of the data's Gram
+  std::uint64_t seed = 1;      // the draw of the displacements
+};
+
+// `regions`: one column per training region, (patchSize + 2 radius)^2 raw grey values each,
+// row-major, centred on the landmark (core/fit/response_map.hpp sampleRegion). Throws Error if
+// there are no regions or their size does not match. An expert trained on fewer than a handful of
+// regions is valid but weak; the caller decides whether to train one.
+PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                             const ExpertTrainingSettings& settings);
+
+}  // namespace clm3d

@@ -1,0 +1,188 @@
+// Tests of training from annotated photos: procedural heads rendered as "photos" with their exact
+// points (.pts beside each PNG) are listed from a manifest, placed in the view nearest their
+// fitted pose (a frontal photo and its mirror image in the frontal view, a photo turned 25 degrees
+// in the -30 view, its mirror image dropped because +30 is a mirrored view), their patches match a
+// render's at the same pose, and a model trained with them holds experts and says where its data
+// came from. Bad photo sources fail with the file named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "core/common/error.hpp"
+#include "core/dataset/manifest.hpp"
+#include "core/dataset/training_photos.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/geometry/projection.hpp"
+#include "core/render/offscreen_renderer.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/synth/synth_head.hpp"
+#include "core/train/photo_samples.hpp"
+#include "core/train/trainer.hpp"
+#include "core/viz/image_file.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+
+const SynthHead& head() {
+  static const SynthHead h = generateHead(1, {}, SynthOptions{1.5, 512});
+  return h;
+}
+
+TrainSettings settings() {
+  TrainSettings s;
+  s.yawsDeg = {-30, 0, 30};
+  s.pitchesDeg = {0};
+  s.scales = 2;
+  s.patchSize = 12;
+  s.samplesPerView = 2;
+  s.supersample = 1;
+  s.threads = 2;
+  s.expertRadius = 4;
+  s.textureMaxModes = 8;
+  return s;
+}
+
+// Renders the head at (0, yaw, roll) over mid-grey into DIR/NAME.png with its 25 points in
+// NAME.pts; the face's eye distance is about 90 pixels in a 400 x 400 photo.
+void writePhoto(const fs::path& dir, const std::string& name, double yawDeg, double rollDeg) {
+  const Camera camera = Camera::fromVerticalFov(400, 400, 40.0);
+  const Eigen::Matrix3Xd truth = head().landmarks.matrix();
+  const double iodMm = (truth.col(7) - truth.col(10)).norm();
+  const Pose pose =
+      Pose::fromDegrees(0.0, yawDeg, rollDeg, {5.0, 3.0, -camera.focalY() * iodMm / 90.0});
+  OffscreenRenderer renderer(head().mesh);
+  const RenderResult render = renderer.render(pose, camera);
+  cv::Mat photo(render.bgra.rows, render.bgra.cols, CV_8UC3);
+  for (int y = 0; y < photo.rows; ++y) {
+    for (int x = 0; x < photo.cols; ++x) {
+      const cv::Vec4b s = render.bgra.at<cv::Vec4b>(y, x);
+      const double a = s[3] / 255.0;
+      for (int c = 0; c < 3; ++c) {
+        photo.at<cv::Vec3b>(y, x)[c] = static_cast<unsigned char>(a * s[c] + (1 - a) * 128.0);
+      }
+    }
+  }
+  writeImage(dir / (name + ".png"), photo);
+  const Eigen::Matrix2Xd points = projectPoints(truth, pose, camera);
+  LandmarkSet set(25, 2);
+  for (int i = 0; i < 25; ++i) set.set(i, Eigen::Vector2d(points.col(i)));
+  writeLandmarks(dir / (name + ".pts"), set, Scheme::byNameOrPath("thesis25"));
+}
+
+struct PhotoFixture {
+  test::TempDir dir;
+  fs::path manifest;
+  PhotoFixture() {
+    fs::create_directories(dir / "photos");
+    writePhoto(dir / "photos", "a-frontal", 0.0, 8.0);
+    writePhoto(dir / "photos", "b-turned", -25.0, 0.0);
+    manifest = dir / "manifest.json";
+    test::writeFile(manifest, R"({"procedural": [{"seeds": "1-2"}],
+                                  "photos": [{"folder": "photos"}]})");
+  }
+};
+
+TEST(PhotoTraining, ManifestListsThePhotosWithTrustedPoints) {
+  PhotoFixture fixture;
+  const DatasetManifest manifest = loadManifest(fixture.manifest);
+  ASSERT_EQ(manifest.photos.size(), 1u);
+  const std::vector<TrainingPhoto> photos = loadTrainingPhotos(manifest);
+  ASSERT_EQ(photos.size(), 2u);
+  EXPECT_EQ(photos[0].id, "a-frontal.png");
+  EXPECT_EQ(photos[0].points.size(), 25);
+  for (const bool trusted : photos[0].trusted) EXPECT_TRUE(trusted);  // 25-point files: all
+}
+
+TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
+  PhotoFixture fixture;
+  const std::vector<TrainingPhoto> photos = loadTrainingPhotos(loadManifest(fixture.manifest));
+  const TrainSettings s = settings();
+  TrainingInput input;
+  input.schemeJson = schemeJsonFor("thesis25");
+  input.subjects.push_back({"head1", &head().mesh, &head().landmarks});
+  const ClmModel shapeOnly = trainModel(input, s);  // for its shape model
+  std::vector<PhotoPlacement> placements;
+  const std::vector<PhotoSample> samples =
+      preparePhotoSamples(photos, input.schemeJson, shapeOnly.shape, s, &placements);
+  ASSERT_EQ(placements.size(), 2u);
+  EXPECT_NEAR(placements[0].yawDeg, 0.0, 4.0);
+  EXPECT_NEAR(placements[0].rollDeg, 8.0, 2.0);
+  EXPECT_EQ(placements[0].samples, 2);  // the photo and its mirror image, both frontal
+  EXPECT_NEAR(placements[1].yawDeg, -25.0, 4.0);
+  EXPECT_EQ(placements[1].samples, 1);  // its mirror image would train the mirrored +30 view
+  ASSERT_EQ(samples.size(), 3u);
+  EXPECT_EQ(samples[0].view, 1);  // views: yaw -30, 0, +30
+  EXPECT_EQ(samples[1].view, 1);
+  EXPECT_EQ(samples[2].view, 0);
+  EXPECT_EQ(samples[1].id, "a-frontal.png (mirrored)");
+
+  // The turned photo's patches match those of a training render of the head at its pose: same
+  // scale, upright, same place.
+  SampleSpec spec;
+  spec.yawDeg = placements[1].yawDeg;
+  spec.pitchDeg = placements[1].pitchDeg;
+  OffscreenRenderer renderer(head().mesh, RenderOptions{1});
+  const SamplePatches render =
+      renderSample(renderer, head().landmarks, {7, 10}, spec, TrainSettings(s));
+  const SamplePatches& photo = samples[2].patches;
+  int matching = 0;
+  for (const int landmark : {0, 7, 8, 9, 10, 11, 14, 15}) {
+    const Eigen::VectorXf a = photo.grey[0].col(landmark);
+    const Eigen::VectorXf b = render.grey[0].col(landmark);
+    const double ncc = a.dot(b) / a.size();
+    if (ncc > 0.8) ++matching;
+  }
+  EXPECT_GE(matching, 6);
+  // Expert regions at both scales, (12 + 2 x 4)^2 values per landmark.
+  ASSERT_EQ(samples[0].patches.regions.size(), 2u);
+  EXPECT_EQ(samples[0].patches.regions[1].rows(), 20 * 20);
+}
+
+TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
+  PhotoFixture fixture;
+  TrainSettings s = settings();
+  const ClmModel model = trainFromManifest(fixture.manifest, s, "test");
+  EXPECT_NE(model.provenance.notes.find("3 photo samples from 2 annotated photos"),
+            std::string::npos)
+      << model.provenance.notes;
+  EXPECT_NE(model.provenance.notes.find("licence"), std::string::npos);
+  for (const ViewModel& view : model.views) {
+    for (const PatchModel& patches : view.scales) {
+      EXPECT_EQ(patches.experts.size(), patches.landmarks.size());
+    }
+  }
+  EXPECT_NO_THROW(model.validate());
+}
+
+TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
+  test::TempDir dir;
+  fs::create_directories(dir / "photos");
+  test::writeFile(dir / "photos" / "x.png", "not really an image");  // no landmark file
+  test::writeFile(dir / "m.json", R"({"procedural": [{"seeds": "1"}],
+                                     "photos": [{"folder": "photos"}]})");
+  try {
+    loadTrainingPhotos(loadManifest(dir / "m.json"));
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.png"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no landmark file"), std::string::npos) << e.what();
+  }
+  test::writeFile(dir / "photos" / "x.pts", "version: 1\nn_points: 3\n{\n1 2\n3 4\n5 6\n}\n");
+  try {
+    loadTrainingPhotos(loadManifest(dir / "m.json"));
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.pts"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has 3 points"), std::string::npos) << e.what();
+  }
+  test::writeFile(dir / "m2.json", R"({"procedural": [{"seeds": "1"}],
+                                      "photos": [{"folder": "photos", "list": "l.txt"}]})");
+  EXPECT_THROW(loadManifest(dir / "m2.json"), InputError);
+}
+
+}  // namespace
+}  // namespace clm3d
