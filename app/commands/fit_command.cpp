@@ -83,8 +83,8 @@ void runBatchFit(const FitArgs& args) {
   CancelToken token;
   gCancel = &token;
   const auto previous = std::signal(SIGINT, onFitInterrupt);
-  const auto progress = [&args](double, std::string_view stage) {
-    if (!args.quiet) std::cerr << stage << '\n';
+  const auto progress = [&args](double fraction, std::string_view stage) {
+    if (!args.quiet && fraction > 0.0) std::cerr << stage << '\n';
   };
   BatchFitSummary summary;
   try {

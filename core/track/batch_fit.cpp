@@ -173,7 +173,10 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       try {
         start = initialiseFromImage(*model_, fitter.camera(), lastImage_, detector());
       } catch (const NoFaceFound&) {
-        return failed(image, ImageFitStatus::NoFace, fileMessage(image, "no face found"));
+        outcome.status = ImageFitStatus::NoFace;
+        outcome.message = fileMessage(image, "no face found");
+        outcome.detectMilliseconds = millisecondsSince(begin);
+        return outcome;
       }
       outcome.detectMilliseconds = millisecondsSince(begin);
     }
@@ -232,6 +235,20 @@ BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
                           const ImageFitSettings& settings, const ProgressCallback& progress,
                           const CancelToken* cancel, const ImageFitCallback& onImage) {
   std::error_code error;
+  // Points written into the images' own folder would replace the mark-ups beside them (LFPW keeps
+  // STEM.pts next to STEM.jpg), and into the start folder the start points: refuse both.
+  for (const fs::path& image : job.images) {
+    const fs::path folder = image.parent_path().empty() ? fs::path(".") : image.parent_path();
+    if (fs::equivalent(folder, job.outDir, error)) {
+      throwInputError(job.outDir, "is the folder of the images (" + image.filename().string() +
+                                      "): the points would overwrite files beside them; choose "
+                                      "another output folder");
+    }
+  }
+  if (!job.initDir.empty() && fs::equivalent(job.initDir, job.outDir, error)) {
+    throwInputError(job.outDir, "is the folder of the start points; choose another output folder");
+  }
+  error.clear();
   fs::create_directories(job.outDir, error);
   if (error) throwInputError(job.outDir, "cannot create the folder: " + error.message());
   BatchFitSummary summary;

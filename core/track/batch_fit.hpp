@@ -130,8 +130,10 @@ using ImageFitCallback = std::function<void(std::size_t index, const ImageFitOut
 // earlier one's is an error row (its points would overwrite the other's). With an init folder, an
 // image without a points file there is an error row. Progress goes 0..1 over the images, its stage
 // "fit K/N NAME 3.1 ms" (or "... no face" / "... error"). When cancelled (checked between
-// images) the summary of the images done so far is written and Cancelled thrown. Throws InputError
-// when the summary cannot be written.
+// images) the summary of the images done so far is written and Cancelled thrown. Throws InputError,
+// before any image, when the output folder is an image's folder or the init folder (the points
+// would overwrite the mark-ups or starts there) or cannot be created, and when the summary cannot
+// be written.
 BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
                           const ImageFitSettings& settings, const ProgressCallback& progress = {},
                           const CancelToken* cancel = nullptr,

@@ -167,6 +167,12 @@ TEST(BatchFitCli, ModesAreMutuallyExclusiveAndBadFoldersNameThemselves) {
                                 (f.dir / "o").string());
   EXPECT_EQ(missing.exitCode, 1) << missing.output;
   EXPECT_TRUE(contains(missing.output, absent.string())) << missing.output;
+  // Fits written beside the images would overwrite their mark-ups.
+  const auto sameFolder = runClm3d("fit" + model + " --images " + f.images.string() +
+                                   " --out-dir " + f.images.string());
+  EXPECT_EQ(sameFolder.exitCode, 1) << sameFolder.output;
+  EXPECT_TRUE(contains(sameFolder.output, "is the folder of the images")) << sameFolder.output;
+  EXPECT_FALSE(fs::exists(f.images / "summary.csv"));
   const fs::path empty = f.dir / "empty-list.txt";
   test::writeFile(empty, "# nothing\n\n");
   const auto none = runClm3d("fit" + model + " --images " + empty.string() + " --out-dir " +
