@@ -1,6 +1,7 @@
 // clm3d eval-points: the error of thesis eq. 5.1 between point files of one image (a fit against a
 // hand mark-up; 68-point files are converted to thesis25) over a chosen subset of the points,
-// normalised by the true distance of the scheme's normalisation pair (docs/evaluation.md).
+// normalised by the true distance of the scheme's normalisation pair (docs/evaluation.md). With
+// --truth-dir and --pred-dir, whole folders paired by file stem (core/eval/point_folder_error).
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"
 #include "core/scheme/scheme.hpp"
 
@@ -22,6 +24,9 @@ namespace fs = std::filesystem;
 struct EvalPointsArgs {
   fs::path truth;
   std::vector<fs::path> predictions;
+  fs::path truthDir;
+  std::vector<fs::path> predictionDirs;
+  fs::path csv;
   std::vector<std::string> labels;
   std::string scheme = "thesis25";
   std::string points;
@@ -31,6 +36,23 @@ struct EvalPointsArgs {
 };
 
 void runEvalPoints(const EvalPointsArgs& args) {
+  const bool files = !args.truth.empty() || !args.predictions.empty();
+  const bool folders = !args.truthDir.empty() || !args.predictionDirs.empty();
+  if (files == folders) {
+    throw CLI::ValidationError("--truth/--truth-dir",
+                               "give --truth A.pts --pred B.pts (one image) or --truth-dir DIR "
+                               "--pred-dir DIR (folders paired by file stem)");
+  }
+  if (files && (args.truth.empty() || args.predictions.empty())) {
+    throw CLI::ValidationError("--truth/--pred", "one image needs both --truth and --pred");
+  }
+  if (folders && (args.truthDir.empty() || args.predictionDirs.empty())) {
+    throw CLI::ValidationError("--truth-dir/--pred-dir",
+                               "folders need both --truth-dir and --pred-dir");
+  }
+  if (files && !args.csv.empty()) {
+    throw CLI::ValidationError("--csv", "the per-image table goes with --truth-dir");
+  }
   const Scheme scheme = Scheme::byNameOrPath(args.scheme);
   std::vector<int> selected;
   if (!args.points.empty()) {
@@ -39,6 +61,21 @@ void runEvalPoints(const EvalPointsArgs& args) {
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("--points: ") + e.what());
     }
+  }
+  if (!args.truthDir.empty()) {
+    const auto report = evaluatePointFolders(args.truthDir, args.predictionDirs, args.labels,
+                                             scheme, selected, args.threshold);
+    std::cout << (args.json ? formatPointFolderJson(report) : formatPointFolderText(report));
+    auto& notes = args.json ? std::cerr : std::cout;
+    if (!args.out.empty()) {
+      writeTextAtomically(args.out, formatPointFolderJson(report));
+      notes << "report: " << args.out.string() << '\n';
+    }
+    if (!args.csv.empty()) {
+      writeTextAtomically(args.csv, formatPointFolderCsv(report));
+      notes << "per-image table: " << args.csv.string() << '\n';
+    }
+    return;
   }
   const auto report = evaluatePointFiles(args.truth, args.predictions, args.labels, scheme,
                                          selected, args.threshold);
@@ -55,15 +92,28 @@ void addEvalPointsCommand(CLI::App& root) {
   auto args = std::make_shared<EvalPointsArgs>();
   CLI::App* command = root.add_subcommand(
       "eval-points",
-      "Compare point files of one image (e.g. a fit with a hand mark-up): error of thesis eq. 5.1 "
-      "over chosen points, normalised by the true eye-centre distance");
-  command
-      ->add_option("--truth", args->truth,
-                   "True points (.pts, .ljson, .csv; a 68-point file is converted to thesis25)")
-      ->required();
-  command->add_option("--pred", args->predictions, "Predicted points (repeat to compare several)")
-      ->required();
-  command->add_option("--label", args->labels, "Name of each prediction (one per --pred)");
+      "Compare point files of one image (e.g. a fit with a hand mark-up), or folders of them "
+      "paired "
+      "by file stem: error of thesis eq. 5.1 over chosen points, normalised by the true "
+      "eye-centre distance");
+  auto* truth = command->add_option(
+      "--truth", args->truth,
+      "True points (.pts, .ljson, .csv; a 68-point file is converted to thesis25)");
+  auto* pred = command->add_option("--pred", args->predictions,
+                                   "Predicted points (repeat to compare several)");
+  auto* truthDir = command->add_option(
+      "--truth-dir", args->truthDir,
+      "Folder of true points STEM.pts (68 or 25 points), one per image, instead of --truth");
+  auto* predDir = command->add_option(
+      "--pred-dir", args->predictionDirs,
+      "Folder of predictions STEM.pts, .ljson or .csv (repeat to compare methods); an image "
+      "without one counts as a failure");
+  truth->excludes(truthDir);
+  pred->excludes(predDir);
+  command->add_option("--label", args->labels,
+                      "Name of each prediction (one per --pred or --pred-dir)");
+  command->add_option("--csv", args->csv,
+                      "With --truth-dir: write one row per image and method to this CSV");
   command->add_option(
       "--points", args->points,
       "Points to score: 1-based numbers, ranges and ids, e.g. 1-18,22 (default: all)");

@@ -1,6 +1,9 @@
-// clm3d fit: finds the landmarks in one image: initialise from a face detector or from given
-// points, run the CLM search, write the points (.pts, .ljson or .csv) and optionally an overlay.
-#include <chrono>
+// clm3d fit: finds the landmarks in one image (--image I --out F) or in many with the model loaded
+// once (--images DIR|LIST --out-dir DIR: STEM.pts per image and summary.csv). Both go through
+// core/track/batch_fit's ImageFitter: initialise from a face detector or from given points, run
+// the CLM search, write the points. Ctrl-C stops a batch after the current image.
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -8,9 +11,8 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "core/common/error.hpp"
-#include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
-#include "core/scheme/landmark_file.hpp"
+#include "core/track/batch_fit.hpp"
 #include "core/track/fit_overlay.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -19,52 +21,116 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::atomic<CancelToken*> gCancel{nullptr};
+
+extern "C" void onFitInterrupt(int) {
+  if (CancelToken* token = gCancel.load()) token->cancel();
+}
+
 struct FitArgs {
   fs::path model, image, init, out, overlay;
+  fs::path images, outDir, initDir;
+  bool quiet = false;
   FitOptions fit;
 };
 
-void runFit(const FitArgs& args) {
-  const ClmModel model = loadModel(args.model);
-  const Scheme scheme = model.scheme();
-  const cv::Mat image = readImage(args.image);
-  const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, args.fit.fovDeg);
-  FitState start;
-  if (!args.init.empty()) {
-    start = startFromPointsFile(model, camera, args.init);
-  } else {
-    FaceDetector detector(args.fit.detectorKind());
-    try {
-      start = initialiseFromImage(model, camera, image, detector);
-    } catch (const NoFaceFound&) {
-      throw InputError(
-          fileMessage(args.image, "no face found (give the start points with --init)"));
-    }
-  }
-  Fitter fitter(model, camera, args.fit.settings());
-  const auto begin = std::chrono::steady_clock::now();
-  TrackStep step;
-  step.fit = fitter.fit(image, start);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
-  const FitResult& fit = *step.fit;
+ImageFitSettings imageFitSettings(const FitOptions& options) {
+  ImageFitSettings settings;
+  settings.fit = options.settings();
+  settings.detector = options.detectorKind();
+  settings.verticalFovDeg = options.fovDeg;
+  return settings;
+}
 
-  LandmarkSet points(scheme.size(), 2);
-  for (int i = 0; i < scheme.size(); ++i) points.set(i, Eigen::Vector2d(fit.points.col(i)));
-  writeLandmarks(args.out, points, scheme);
-  const ViewModel& view = model.views[static_cast<std::size_t>(fit.view)];
+void runSingleFit(const FitArgs& args) {
+  if (args.out.empty()) throw CLI::ValidationError("--out", "--image needs --out F.pts");
+  const ClmModel model = loadModel(args.model);
+  ImageFitter fitter(model, imageFitSettings(args.fit));
+  const ImageFitOutcome outcome = fitter.fitFile(args.image, args.init, args.out);
+  if (outcome.status == ImageFitStatus::NoFace) {
+    throw InputError(outcome.message + " (give the start points with --init)");
+  }
+  if (outcome.status != ImageFitStatus::Ok) throw InputError(outcome.message);
+  const FitResult& fit = *outcome.fit;
   std::cout << std::fixed << std::setprecision(3) << "fitted " << args.image.string() << " -> "
             << args.out.string() << ": confidence " << fit.confidence << ", view (pitch "
-            << view.pitchDeg << ", yaw " << view.yawDeg << "), " << fit.iterations << " iterations"
-            << (fit.converged ? "" : " (not converged)") << ", " << std::setprecision(2) << ms
-            << " ms\n";
+            << outcome.viewPitchDeg << ", yaw " << outcome.viewYawDeg << "), " << fit.iterations
+            << " iterations" << (fit.converged ? "" : " (not converged)") << ", "
+            << std::setprecision(2) << outcome.fitMilliseconds << " ms\n";
   if (!args.overlay.empty()) {
+    TrackStep step;
+    step.fit = fit;
     step.row.success = true;
     step.row.confidence = fit.confidence;
-    cv::Mat drawn = image.clone();
-    drawFitOverlay(drawn, step, fitter, scheme);
+    cv::Mat drawn = fitter.lastImage().clone();
+    drawFitOverlay(drawn, step, *fitter.lastFitter(), model.scheme());
     writeImage(args.overlay, drawn);
     std::cout << "overlay: " << args.overlay.string() << '\n';
+  }
+}
+
+// Exit code 1 when any image had an error (after the whole batch and its summary), else 0.
+void runBatchFit(const FitArgs& args) {
+  if (args.outDir.empty()) throw CLI::ValidationError("--out-dir", "--images needs --out-dir DIR");
+  BatchFitJob job;
+  job.images = listBatchImages(args.images);
+  job.outDir = args.outDir;
+  job.initDir = args.initDir;
+  if (!job.initDir.empty() && !fs::is_directory(job.initDir)) {
+    throwInputError(job.initDir, "no such folder (--init-dir)");
+  }
+  const ClmModel model = loadModel(args.model);
+  CancelToken token;
+  gCancel = &token;
+  const auto previous = std::signal(SIGINT, onFitInterrupt);
+  const auto progress = [&args](double fraction, std::string_view stage) {
+    if (!args.quiet && fraction > 0.0) std::cerr << stage << '\n';
+  };
+  BatchFitSummary summary;
+  try {
+    summary = fitImages(model, job, imageFitSettings(args.fit), progress, &token);
+  } catch (...) {
+    std::signal(SIGINT, previous);
+    gCancel = nullptr;
+    throw;
+  }
+  std::signal(SIGINT, previous);
+  gCancel = nullptr;
+  double fitSum = 0.0;
+  for (const ImageFitOutcome& outcome : summary.outcomes) {
+    if (outcome.status == ImageFitStatus::Ok) fitSum += outcome.fitMilliseconds;
+    if (outcome.status == ImageFitStatus::Error) std::cerr << "error: " << outcome.message << '\n';
+  }
+  std::cout << std::fixed << std::setprecision(1) << "fitted " << summary.ok << " of "
+            << summary.outcomes.size() << " images (" << summary.noFace << " without a face, "
+            << summary.errors << " errors), mean fit "
+            << (summary.ok > 0 ? fitSum / summary.ok : 0.0) << " ms -> " << args.outDir.string()
+            << " (summary: " << summary.summaryCsv.string() << ")\n";
+  if (summary.errors > 0) {
+    throw InputError(std::to_string(summary.errors) + " of " +
+                     std::to_string(summary.outcomes.size()) + " images could not be fitted (see " +
+                     summary.summaryCsv.string() + ")");
+  }
+}
+
+void runFit(const FitArgs& args) {
+  if (args.image.empty() == args.images.empty()) {
+    throw CLI::ValidationError("--image/--images",
+                               "give either --image I --out F (one image) or --images DIR|LIST "
+                               "--out-dir DIR (many)");
+  }
+  if (!args.image.empty()) {
+    if (!args.outDir.empty() || !args.initDir.empty()) {
+      throw CLI::ValidationError("--out-dir/--init-dir", "go with --images, not --image");
+    }
+    runSingleFit(args);
+  } else {
+    if (!args.out.empty() || !args.init.empty() || !args.overlay.empty()) {
+      throw CLI::ValidationError("--out/--init/--overlay",
+                                 "go with --image; a batch (--images) takes --out-dir and "
+                                 "--init-dir");
+    }
+    runBatchFit(args);
   }
 }
 
@@ -72,14 +138,25 @@ void runFit(const FitArgs& args) {
 
 void addFitCommand(CLI::App& root) {
   auto args = std::make_shared<FitArgs>();
-  CLI::App* command = root.add_subcommand("fit", "find the landmarks in one image");
+  CLI::App* command = root.add_subcommand(
+      "fit", "find the landmarks in one image, or in many with the model loaded once");
   command->add_option("--model", args->model, "trained model (.clm3d)")->required();
-  command->add_option("--image", args->image, "image to search")->required();
+  auto* image = command->add_option("--image", args->image, "image to search");
+  auto* images = command->add_option(
+      "--images", args->images,
+      "images to search: a folder (every .jpg, .jpeg, .png, .ppm, .bmp, sorted) or a text file "
+      "with one image path per line (relative to the file's folder; # comments)");
+  image->excludes(images);
   command->add_option("--init", args->init,
                       "start from these points (.pts, .ljson, .csv; 68-point files are converted)");
-  command->add_option("--out", args->out, "where to write the points (.pts, .ljson or .csv)")
-      ->required();
+  command->add_option("--out", args->out, "where to write the points (.pts, .ljson or .csv)");
   command->add_option("--overlay", args->overlay, "also write the image with the fit drawn on it");
+  command->add_option("--out-dir", args->outDir,
+                      "with --images: folder for STEM.pts per image and summary.csv");
+  command->add_option("--init-dir", args->initDir,
+                      "with --images: start each image from STEM.pts, .ljson or .csv in this "
+                      "folder instead of the face detector");
+  command->add_flag("--quiet", args->quiet, "with --images: no per-image progress on stderr");
   addFitOptions(*command, args->fit);
   command->callback([args] { runFit(*args); });
 }

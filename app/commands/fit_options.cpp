@@ -4,7 +4,7 @@
 #include "core/detect/initialisation.hpp"
 #include "core/fit/optimiser.hpp"
 #include "core/geometry/camera.hpp"
-#include "core/scheme/landmark_file.hpp"
+#include "core/track/batch_fit.hpp"
 
 namespace clm3d::cli {
 
@@ -79,20 +79,7 @@ void addFitOptions(CLI::App& command, FitOptions& options) {
 
 FitState startFromPointsFile(const ClmModel& model, const Camera& camera,
                              const std::filesystem::path& path) {
-  const Scheme scheme = model.scheme();
-  const LandmarkSet given = readLandmarks(path, &scheme);
-  Eigen::Matrix2Xd points(2, given.size());
-  std::vector<bool> present(static_cast<std::size_t>(given.size()));
-  for (int i = 0; i < given.size(); ++i) {
-    present[static_cast<std::size_t>(i)] = given.has(i);
-    points.col(i) =
-        given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
-  }
-  try {
-    return stateFromPoints(model, camera, points, present);
-  } catch (const InputError& e) {
-    throw InputError(fileMessage(path, e.what()));
-  }
+  return stateFromPointsFile(model, camera, path);
 }
 
 }  // namespace clm3d::cli

@@ -2,6 +2,8 @@
 // procedural head turning a fixed number of degrees per frame, and writes the video, the exact
 // ground truth, the per-frame landmark visibility and a description of how it was made. All work is
 // done by core (eval/synthetic_sequence, synth, mesh, dataset/model_frame). Ctrl-C cancels cleanly.
+// With --photo, the sequence is an annotated photo moving in the image plane instead
+// (core/eval/photo_sequence).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -21,11 +23,13 @@
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/model_frame.hpp"
+#include "core/eval/photo_sequence.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
+#include "core/viz/image_file.hpp"
 
 namespace clm3d::cli {
 namespace {
@@ -63,6 +67,10 @@ struct SynthArgs {
   double diffuse = Lighting{}.diffuse;
   fs::path background;
   std::string format = "avi";
+  fs::path photo;
+  int frames = PhotoSequenceSettings{}.frames;
+  std::uint64_t seed = PhotoSequenceSettings{}.seed;
+  const CLI::Option* sizeOption = nullptr;
 };
 
 // "A:B" or "A" (= "A:A"), degrees; nullopt if malformed.
@@ -214,7 +222,108 @@ SequenceSettings toSettings(const SynthArgs& args) {
   return settings;
 }
 
+// Progress lines on stderr at every 10%, for sequences of 30 frames or more.
+class DecileProgress {
+ public:
+  DecileProgress(int frames, std::chrono::steady_clock::time_point start)
+      : show_(frames >= 30), start_(start) {}
+  void operator()(double fraction, std::string_view stage) {
+    if (!show_) return;
+    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
+    std::lock_guard lock(mutex_);
+    if (decile <= lastDecile_) return;
+    lastDecile_ = decile;
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::ostringstream line;
+    line << "synth: " << std::setw(3) << decile * 10 << "% " << stage << ", " << std::fixed
+         << std::setprecision(1) << seconds << " s";
+    if (fraction < 1.0) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
+    std::cerr << line.str() << '\n';
+  }
+
+ private:
+  bool show_;
+  std::chrono::steady_clock::time_point start_;
+  std::mutex mutex_;
+  int lastDecile_ = 0;
+};
+
+// --photo: the photo moving in the image plane, its landmarks moved with it.
+void runPhotoSynth(const SynthArgs& args) {
+  if (!args.mesh.empty() || args.headSeed) {
+    throw CLI::ValidationError("--photo", "give --photo, --mesh or --head-seed, only one");
+  }
+  if (args.landmarks.empty()) {
+    throw CLI::ValidationError("--photo", "a photo needs its points: --landmarks F.pts");
+  }
+  if (!args.expression.empty()) {
+    throw CLI::ValidationError("--expression", "applies to procedural heads (--head-seed) only");
+  }
+  PhotoSequenceSettings settings;
+  settings.frames = args.frames;
+  settings.seed = args.seed;
+  settings.fps = args.fps;
+  if (args.sizeOption != nullptr && args.sizeOption->count() > 0) {
+    const auto size = parseSize(args.size);
+    if (!size) throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 640x480");
+    settings.width = size->first;
+    settings.height = size->second;
+  }
+  settings.validate();
+  const cv::Mat photo = readImage(args.photo);
+  // 68-point files are converted to the 25 (the earlobes, which have no iBUG point, are missing).
+  const LandmarkSet landmarks = readLandmarks(args.landmarks, &Scheme::thesis25());
+  LandmarkSet points(landmarks.size(), 2);
+  for (int i = 0; i < landmarks.size(); ++i) {
+    if (landmarks.has(i)) points.set(i, Eigen::Vector2d(landmarks.point(i).head<2>()));
+  }
+  try {
+    photoFace(points);
+  } catch (const InputError& e) {
+    throwInputError(args.landmarks, e.what());
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  CancelToken token;
+  gCancel = &token;
+  const auto previous = std::signal(SIGINT, onSynthInterrupt);
+  DecileProgress decile(settings.frames, start);
+  const auto progress = [&decile](double fraction, std::string_view stage) {
+    decile(fraction, stage);
+  };
+  const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
+  PhotoSequenceSummary summary;
+  try {
+    summary =
+        writePhotoSequence(photo, points, settings, {args.photo.string(), args.landmarks.string()},
+                           files, progress, &token);
+  } catch (const Cancelled&) {
+    std::signal(SIGINT, previous);
+    gCancel = nullptr;
+    throw Error("cancelled, no sequence written");
+  } catch (...) {
+    std::signal(SIGINT, previous);
+    gCancel = nullptr;
+    throw;
+  }
+  std::signal(SIGINT, previous);
+  gCancel = nullptr;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "synth: " << summary.frames << " frames " << summary.frameSize.width << "x"
+            << summary.frameSize.height << " of " << args.photo.string() << " (seed "
+            << settings.seed << ", face " << std::fixed << std::setprecision(1) << summary.face.size
+            << " px, points " << points.presentCount() << "/" << points.size() << ") -> "
+            << files.video.string() << " (+ truth.csv, truth-visibility.csv, sequence.json) in "
+            << seconds << " s\n";
+}
+
 void runSynth(const SynthArgs& args) {
+  if (!args.photo.empty()) {
+    runPhotoSynth(args);
+    return;
+  }
   const bool scan = !args.mesh.empty() || !args.landmarks.empty();
   if (scan && args.headSeed) {
     throw CLI::ValidationError("--head-seed",
@@ -223,8 +332,8 @@ void runSynth(const SynthArgs& args) {
   }
   if (!scan && !args.headSeed) {
     throw CLI::ValidationError("--mesh/--head-seed",
-                               "give --mesh and --landmarks (a scan) or --head-seed N (a "
-                               "procedural head)");
+                               "give --mesh and --landmarks (a scan), --head-seed N (a "
+                               "procedural head) or --photo and --landmarks (a photo)");
   }
   if (scan && (args.mesh.empty() || args.landmarks.empty())) {
     throw CLI::ValidationError("--mesh/--landmarks", "a scan needs both --mesh and --landmarks");
@@ -251,21 +360,9 @@ void runSynth(const SynthArgs& args) {
   CancelToken token;
   gCancel = &token;
   const auto previous = std::signal(SIGINT, onSynthInterrupt);
-  std::mutex printMutex;
-  int lastDecile = 0;
-  const bool showProgress = frames >= 30;
-  const auto progress = [&](double fraction, std::string_view stage) {
-    if (!showProgress) return;
-    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
-    std::lock_guard lock(printMutex);
-    if (decile <= lastDecile) return;
-    lastDecile = decile;
-    const double seconds = elapsed() - loadSeconds;
-    std::ostringstream line;
-    line << "synth: " << std::setw(3) << decile * 10 << "% " << stage << ", " << std::fixed
-         << std::setprecision(1) << seconds << " s";
-    if (fraction < 1.0) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
-    std::cerr << line.str() << '\n';
+  DecileProgress decile(frames, std::chrono::steady_clock::now());
+  const auto progress = [&decile](double fraction, std::string_view stage) {
+    decile(fraction, stage);
   };
   const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
   SequenceSummary summary;
@@ -317,7 +414,16 @@ void addSynthCommand(CLI::App& root) {
       ->required();
   cmd->add_option("--mesh", args->mesh, "Textured scan: OBJ (+MTL, image), PLY, glTF/GLB");
   cmd->add_option("--landmarks", args->landmarks,
-                  "The scan's 3D landmarks (.pts/.ljson/.csv, 25 thesis or 68 iBUG points)");
+                  "The scan's 3D landmarks, or the photo's 2D points (.pts/.ljson/.csv, 25 thesis "
+                  "or 68 iBUG points)");
+  cmd->add_option("--photo", args->photo,
+                  "Use this annotated photo moving in the image plane (translation, scale, "
+                  "rotation, brightness, contrast) instead of a head turning");
+  cmd->add_option("--frames", args->frames, "With --photo: number of frames")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "With --photo: seed of the random smooth motion")
+      ->capture_default_str();
   cmd->add_option("--up", args->up, "The scan file's up axis")->capture_default_str();
   cmd->add_option("--front", args->front, "The scan file's axis out of the face")
       ->capture_default_str();
@@ -351,9 +457,12 @@ void addSynthCommand(CLI::App& root) {
       ->capture_default_str();
   cmd->add_flag("--sweep", args->sweep,
                 "Go frontal -> FROM -> TO -> frontal instead of FROM -> TO");
-  cmd->add_option("--size", args->size, "Image size WIDTHxHEIGHT (even)")
-      ->check(sizeValidator())
-      ->capture_default_str();
+  args->sizeOption =
+      cmd->add_option("--size", args->size,
+                      "Image size WIDTHxHEIGHT (even); with --photo default the photo's size "
+                      "(rounded down to even)")
+          ->check(sizeValidator())
+          ->capture_default_str();
   cmd->add_option("--face-size", args->faceSize,
                   "Distance between the eye centres in the frontal view, pixels")
       ->check(CLI::Range(4.0, 8000.0))

@@ -1,0 +1,207 @@
+#include "core/eval/point_folder_error.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/common/csv_cell.hpp"
+#include "core/common/error.hpp"
+#include "core/eval/eval_report.hpp"
+#include "core/eval/statistics.hpp"
+#include "core/scheme/landmark_file.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string fixedDecimals(double value, int decimals) {
+  if (!std::isfinite(value)) return {};
+  char buffer[64];
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
+  return ec == std::errc() ? std::string(buffer, end) : std::string();
+}
+
+void requireFolder(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) throwInputError(folder, "no such folder");
+}
+
+// The truth's selected points that are present.
+int presentSelected(const LandmarkSet& truth, const std::vector<int>& selected) {
+  int count = 0;
+  if (selected.empty()) return truth.presentCount();
+  for (const int i : selected) count += truth.has(i) ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
+PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
+                                       const std::vector<fs::path>& predictionFolders,
+                                       const std::vector<std::string>& labels, const Scheme& scheme,
+                                       const std::vector<int>& selected, double threshold) {
+  if (!labels.empty() && labels.size() != predictionFolders.size()) {
+    throw InputError(std::to_string(labels.size()) + " labels for " +
+                     std::to_string(predictionFolders.size()) + " prediction folders");
+  }
+  requireFolder(truthFolder);
+  for (const fs::path& folder : predictionFolders) requireFolder(folder);
+
+  PointFolderReport report;
+  report.schemeName = scheme.name();
+  report.truthFolder = truthFolder;
+  report.threshold = threshold;
+  report.selected = selected;
+  std::vector<fs::path> truthFiles;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(truthFolder, error)) {
+    if (entry.path().extension() == ".pts" && !entry.is_directory()) {
+      truthFiles.push_back(entry.path());
+    }
+  }
+  if (error) throwInputError(truthFolder, "cannot list the folder: " + error.message());
+  if (truthFiles.empty()) throwInputError(truthFolder, "no .pts truth file in the folder");
+  std::sort(truthFiles.begin(), truthFiles.end());
+
+  const auto [a, b] = scheme.normalisationPair();
+  std::vector<LandmarkSet> truths;
+  for (const fs::path& file : truthFiles) {
+    LandmarkSet truth = readLandmarks(file, &scheme);
+    if (!truth.has(a) || !truth.has(b) ||
+        !((truth.point(a) - truth.point(b)).head<2>().norm() > 1e-9)) {
+      throwInputError(file, "no usable normalisation pair (points " + std::to_string(a + 1) +
+                                " and " + std::to_string(b + 1) + " missing or coincident)");
+    }
+    report.stems.push_back(file.stem().string());
+    report.truePoints.push_back(presentSelected(truth, selected));
+    truths.push_back(std::move(truth));
+  }
+
+  for (std::size_t m = 0; m < predictionFolders.size(); ++m) {
+    PointFolderMethod method;
+    method.folder = predictionFolders[m];
+    fs::path name = method.folder.lexically_normal();
+    if (!name.has_filename()) name = name.parent_path();  // "fits/" names the folder "fits"
+    method.label = !labels.empty() ? labels[m] : name.filename().string();
+    if (method.label.empty()) method.label = method.folder.string();
+    std::vector<double> errors;
+    for (std::size_t i = 0; i < truths.size(); ++i) {
+      ++method.images;
+      method.truePoints += report.truePoints[i];
+      std::optional<fs::path> file;
+      for (const char* extension : {".pts", ".ljson", ".csv"}) {
+        const fs::path candidate = method.folder / (report.stems[i] + extension);
+        if (fs::is_regular_file(candidate, error)) {
+          file = candidate;
+          break;
+        }
+      }
+      method.files.push_back(file);
+      if (!file) {
+        ++method.missing;
+        method.results.emplace_back();
+        continue;
+      }
+      ++method.predicted;
+      const LandmarkSet prediction = readLandmarks(*file, &scheme);
+      PointSetError result;
+      try {
+        result = evaluatePointSet(truths[i], prediction, scheme, selected, threshold);
+      } catch (const std::invalid_argument& e) {
+        throwInputError(*file, e.what());
+      }
+      result.label = method.label;
+      method.foundPoints += result.foundPoints;
+      if (std::isfinite(result.error)) errors.push_back(result.error);
+      method.results.emplace_back(std::move(result));
+    }
+    const Descriptive stats = describe(errors);
+    method.meanError = errors.empty() ? std::numeric_limits<double>::quiet_NaN() : stats.mean;
+    method.medianError = errors.empty() ? std::numeric_limits<double>::quiet_NaN() : stats.median;
+    method.foundShare = method.truePoints > 0
+                            ? static_cast<double>(method.foundPoints) / method.truePoints
+                            : std::numeric_limits<double>::quiet_NaN();
+    report.methods.push_back(std::move(method));
+  }
+  return report;
+}
+
+std::string formatPointFolderText(const PointFolderReport& report) {
+  std::ostringstream out;
+  out << "truth: " << report.truthFolder.string() << " (" << report.stems.size()
+      << " images, scheme " << report.schemeName << ", ";
+  if (report.selected.empty()) {
+    out << "all points";
+  } else {
+    out << report.selected.size() << " points:";
+    for (const int i : report.selected) out << ' ' << i + 1;
+  }
+  out << ")\n";
+  for (const PointFolderMethod& m : report.methods) {
+    out << m.label << " (" << m.folder.string() << "): mean error " << formatErrorValue(m.meanError)
+        << ", median " << formatErrorValue(m.medianError) << " over " << m.predicted << '/'
+        << m.images << " images; within " << fixedDecimals(report.threshold, 2) << ": "
+        << m.foundPoints << '/' << m.truePoints << " points ("
+        << (std::isfinite(m.foundShare) ? fixedDecimals(100.0 * m.foundShare, 1) + "%" : "n/a")
+        << "); missing predictions: " << m.missing << '\n';
+  }
+  return out.str();
+}
+
+std::string formatPointFolderJson(const PointFolderReport& report) {
+  using nlohmann::json;
+  const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json points = json::array();
+  for (const int i : report.selected) points.push_back(i + 1);
+  json methods = json::array();
+  for (const PointFolderMethod& m : report.methods) {
+    methods.push_back({{"label", m.label},
+                       {"folder", m.folder.string()},
+                       {"predicted", m.predicted},
+                       {"missing", m.missing},
+                       {"mean_error", number(m.meanError)},
+                       {"median_error", number(m.medianError)},
+                       {"true_points", m.truePoints},
+                       {"found_points", m.foundPoints},
+                       {"found_share", number(m.foundShare)}});
+  }
+  const json document = {{"format", "clm3d-point-folder-evaluation"},
+                         {"version", 1},
+                         {"scheme", report.schemeName},
+                         {"truth_folder", report.truthFolder.string()},
+                         {"threshold", report.threshold},
+                         {"points", points},
+                         {"images", report.stems.size()},
+                         {"methods", methods}};
+  return document.dump(2) + "\n";
+}
+
+std::string formatPointFolderCsv(const PointFolderReport& report) {
+  std::ostringstream out;
+  out << "image,method,status,error,max_error,true_points,scored_points,found_points,inter_ocular,"
+         "prediction\n";
+  for (std::size_t i = 0; i < report.stems.size(); ++i) {
+    for (const PointFolderMethod& m : report.methods) {
+      out << csvCell(report.stems[i]) << ',' << csvCell(m.label) << ',';
+      const auto& result = m.results[i];
+      if (!result) {
+        out << "missing,,," << report.truePoints[i] << ",,,,\n";
+        continue;
+      }
+      out << "ok," << fixedDecimals(result->error, 6) << ',' << fixedDecimals(result->maxError, 6)
+          << ',' << result->truePoints << ',' << result->scoredPoints << ',' << result->foundPoints
+          << ',' << fixedDecimals(result->interOcular, 3) << ',' << csvCell(m.files[i]->string())
+          << '\n';
+    }
+  }
+  return out.str();
+}
+
+}  // namespace clm3d

@@ -1,0 +1,313 @@
+#include "core/track/batch_fit.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <opencv2/core.hpp>
+#include <sstream>
+#include <system_error>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/csv_cell.hpp"
+#include "core/common/error.hpp"
+#include "core/detect/initialisation.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/viz/image_file.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+std::string lowerExtension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool isImageFile(const fs::path& path) {
+  static const std::vector<std::string> kExtensions{".jpg", ".jpeg", ".png", ".ppm", ".bmp"};
+  const std::string extension = lowerExtension(path);
+  return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
+}
+
+std::string trimmed(const std::string& line) {
+  const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
+  auto begin = std::find_if_not(line.begin(), line.end(), space);
+  auto end = std::find_if_not(line.rbegin(), std::string::const_reverse_iterator(begin), space);
+  return std::string(begin, end.base());
+}
+
+// Locale-independent fixed-point text; empty for NaN.
+std::string fixedCell(double value, int decimals) {
+  if (!std::isfinite(value)) return {};
+  char buffer[64];
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
+  return ec == std::errc() ? std::string(buffer, end) : std::string();
+}
+
+ImageFitOutcome failed(const fs::path& image, ImageFitStatus status, std::string message) {
+  ImageFitOutcome outcome;
+  outcome.image = image;
+  outcome.status = status;
+  outcome.message = std::move(message);
+  return outcome;
+}
+
+}  // namespace
+
+std::vector<fs::path> listBatchImages(const fs::path& folderOrList) {
+  std::error_code error;
+  const fs::file_status status = fs::status(folderOrList, error);
+  if (!fs::exists(status)) throwInputError(folderOrList, "no such folder or image list");
+  std::vector<fs::path> images;
+  if (fs::is_directory(status)) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(folderOrList, error)) {
+      if (isImageFile(entry.path()) && !entry.is_directory()) images.push_back(entry.path());
+    }
+    if (error) throwInputError(folderOrList, "cannot list the folder: " + error.message());
+    std::sort(images.begin(), images.end());
+    if (images.empty()) {
+      throwInputError(folderOrList, "no image (.jpg, .jpeg, .png, .ppm, .bmp) in the folder");
+    }
+    return images;
+  }
+  std::istringstream lines(readTextFile(folderOrList));
+  const fs::path base = folderOrList.parent_path();
+  std::string line;
+  while (std::getline(lines, line)) {
+    const std::string entry = trimmed(line);
+    if (entry.empty() || entry.front() == '#') continue;
+    const fs::path path(entry);
+    images.push_back(path.is_absolute() ? path : base / path);
+  }
+  if (images.empty()) throwInputError(folderOrList, "the image list names no image");
+  return images;
+}
+
+FitState stateFromPointsFile(const ClmModel& model, const Camera& camera, const fs::path& path) {
+  const Scheme scheme = model.scheme();
+  const LandmarkSet given = readLandmarks(path, &scheme);
+  Eigen::Matrix2Xd points(2, given.size());
+  std::vector<bool> present(static_cast<std::size_t>(given.size()));
+  for (int i = 0; i < given.size(); ++i) {
+    present[static_cast<std::size_t>(i)] = given.has(i);
+    points.col(i) =
+        given.has(i) ? Eigen::Vector2d(given.point(i).head<2>()) : Eigen::Vector2d::Zero();
+  }
+  try {
+    return stateFromPoints(model, camera, points, present);
+  } catch (const InputError& e) {
+    throw InputError(fileMessage(path, e.what()));
+  }
+}
+
+std::optional<fs::path> findPointsFile(const fs::path& folder, const std::string& stem) {
+  for (const char* extension : {".pts", ".ljson", ".csv"}) {
+    const fs::path candidate = folder / (stem + extension);
+    std::error_code error;
+    if (fs::is_regular_file(candidate, error)) return candidate;
+  }
+  return std::nullopt;
+}
+
+const char* toString(ImageFitStatus status) {
+  switch (status) {
+    case ImageFitStatus::Ok:
+      return "ok";
+    case ImageFitStatus::NoFace:
+      return "no-face";
+    case ImageFitStatus::Error:
+      return "error";
+  }
+  return "error";
+}
+
+ImageFitter::ImageFitter(const ClmModel& model, const ImageFitSettings& settings)
+    : model_(&model), settings_(settings) {
+  settings_.fit.validate(model);
+}
+
+ImageFitter::~ImageFitter() = default;
+
+FaceDetector& ImageFitter::detector() {
+  if (!detector_) detector_ = std::make_unique<FaceDetector>(settings_.detector);
+  return *detector_;
+}
+
+Fitter& ImageFitter::fitterFor(const cv::Mat& image) {
+  if (!fitter_ || fitter_->camera().width != image.cols || fitter_->camera().height != image.rows) {
+    fitter_.reset();
+    const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings_.verticalFovDeg);
+    fitter_ = std::make_unique<Fitter>(*model_, camera, settings_.fit);
+  }
+  return *fitter_;
+}
+
+ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& startPoints,
+                                     const fs::path& output) {
+  // Set-up failures are not the image's fault: they propagate (see the header).
+  if (startPoints.empty()) detector();
+  ImageFitOutcome outcome;
+  outcome.image = image;
+  try {
+    lastImage_ = cv::Mat();
+    lastImage_ = readImage(image);
+    Fitter& fitter = fitterFor(lastImage_);
+    FitState start;
+    if (!startPoints.empty()) {
+      start = stateFromPointsFile(*model_, fitter.camera(), startPoints);
+    } else {
+      const auto begin = std::chrono::steady_clock::now();
+      try {
+        start = initialiseFromImage(*model_, fitter.camera(), lastImage_, detector());
+      } catch (const NoFaceFound&) {
+        outcome.status = ImageFitStatus::NoFace;
+        outcome.message = fileMessage(image, "no face found");
+        outcome.detectMilliseconds = millisecondsSince(begin);
+        return outcome;
+      }
+      outcome.detectMilliseconds = millisecondsSince(begin);
+    }
+    const auto begin = std::chrono::steady_clock::now();
+    FitResult fit = fitter.fit(lastImage_, start);
+    outcome.fitMilliseconds = millisecondsSince(begin);
+    if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
+      const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];
+      outcome.viewPitchDeg = view.pitchDeg;
+      outcome.viewYawDeg = view.yawDeg;
+    }
+    if (!output.empty()) {
+      const Scheme scheme = model_->scheme();
+      LandmarkSet points(scheme.size(), 2);
+      for (int i = 0; i < scheme.size(); ++i) points.set(i, Eigen::Vector2d(fit.points.col(i)));
+      writeLandmarks(output, points, scheme);
+      outcome.output = output;
+    }
+    outcome.fit = std::move(fit);
+    outcome.status = ImageFitStatus::Ok;
+  } catch (const InputError& e) {
+    // Messages of the image, points and output files already name their file; others (a fit on
+    // an image too small for the model) are given the image's name.
+    std::string message = e.what();
+    bool named = false;
+    for (const fs::path* file : {&image, &startPoints, &output}) {
+      named = named || (!file->empty() && message.find(file->string()) != std::string::npos);
+    }
+    return failed(image, ImageFitStatus::Error, named ? message : fileMessage(image, message));
+  } catch (const cv::Exception& e) {
+    return failed(image, ImageFitStatus::Error, fileMessage(image, e.what()));
+  }
+  return outcome;
+}
+
+std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes) {
+  std::ostringstream out;
+  out << "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,iterations,converged,"
+         "error\n";
+  for (const ImageFitOutcome& o : outcomes) {
+    out << csvCell(o.image.string()) << ',' << toString(o.status) << ','
+        << fixedCell(o.fitMilliseconds, 3) << ',' << fixedCell(o.detectMilliseconds, 3) << ',';
+    if (o.fit) {
+      out << fixedCell(o.fit->confidence, 6) << ',' << fixedCell(o.viewPitchDeg, 1) << ','
+          << fixedCell(o.viewYawDeg, 1) << ',' << o.fit->iterations << ','
+          << (o.fit->converged ? 1 : 0) << ',';
+    } else {
+      out << ",,,,,";
+    }
+    out << csvCell(o.message) << '\n';
+  }
+  return out.str();
+}
+
+BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
+                          const ImageFitSettings& settings, const ProgressCallback& progress,
+                          const CancelToken* cancel, const ImageFitCallback& onImage) {
+  std::error_code error;
+  // Points written into the images' own folder would replace the mark-ups beside them (LFPW keeps
+  // STEM.pts next to STEM.jpg), and into the start folder the start points: refuse both.
+  for (const fs::path& image : job.images) {
+    const fs::path folder = image.parent_path().empty() ? fs::path(".") : image.parent_path();
+    if (fs::equivalent(folder, job.outDir, error)) {
+      throwInputError(job.outDir, "is the folder of the images (" + image.filename().string() +
+                                      "): the points would overwrite files beside them; choose "
+                                      "another output folder");
+    }
+  }
+  if (!job.initDir.empty() && fs::equivalent(job.initDir, job.outDir, error)) {
+    throwInputError(job.outDir, "is the folder of the start points; choose another output folder");
+  }
+  error.clear();
+  fs::create_directories(job.outDir, error);
+  if (error) throwInputError(job.outDir, "cannot create the folder: " + error.message());
+  BatchFitSummary summary;
+  summary.summaryCsv = job.outDir / "summary.csv";
+  ImageFitter fitter(model, settings);
+  std::map<std::string, fs::path> stems;  // stem -> the first image with it
+  const std::size_t total = job.images.size();
+  const auto writeSummary = [&] {
+    writeTextAtomically(summary.summaryCsv, formatBatchFitSummary(summary.outcomes));
+  };
+  if (progress) progress(0.0, "fit 0/" + std::to_string(total));
+  for (std::size_t i = 0; i < total; ++i) {
+    if (cancel && cancel->cancelled()) {
+      writeSummary();
+      throw Cancelled();
+    }
+    const fs::path& image = job.images[i];
+    const std::string stem = image.stem().string();
+    ImageFitOutcome outcome;
+    if (const auto [first, inserted] = stems.emplace(stem, image); !inserted) {
+      outcome = failed(
+          image, ImageFitStatus::Error,
+          fileMessage(image, "has the same stem as " + first->second.string() +
+                                 ", whose points are written to " + stem + job.pointsExtension));
+    } else if (!job.initDir.empty()) {
+      const auto start = findPointsFile(job.initDir, stem);
+      outcome =
+          start ? fitter.fitFile(image, *start, job.outDir / (stem + job.pointsExtension))
+                : failed(image, ImageFitStatus::Error,
+                         fileMessage(image, "no start points " + stem + ".pts, .ljson or .csv in " +
+                                                job.initDir.string()));
+    } else {
+      outcome = fitter.fitFile(image, {}, job.outDir / (stem + job.pointsExtension));
+    }
+    switch (outcome.status) {
+      case ImageFitStatus::Ok:
+        ++summary.ok;
+        break;
+      case ImageFitStatus::NoFace:
+        ++summary.noFace;
+        break;
+      case ImageFitStatus::Error:
+        ++summary.errors;
+        break;
+    }
+    summary.outcomes.push_back(std::move(outcome));
+    const ImageFitOutcome& done = summary.outcomes.back();
+    if (onImage) onImage(i, done);
+    if (progress) {
+      std::string stage = "fit " + std::to_string(i + 1) + "/" + std::to_string(total) + " " +
+                          image.filename().string() + " ";
+      stage += done.status == ImageFitStatus::Ok       ? fixedCell(done.fitMilliseconds, 1) + " ms"
+               : done.status == ImageFitStatus::NoFace ? std::string("no face")
+                                                       : std::string("error");
+      progress(static_cast<double>(i + 1) / static_cast<double>(total), stage);
+    }
+  }
+  writeSummary();
+  return summary;
+}
+
+}  // namespace clm3d

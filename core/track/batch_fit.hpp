@@ -1,0 +1,142 @@
+// Fitting many still images with one loaded model: `clm3d fit --image` (one image) and
+// `clm3d fit --images DIR|LIST --out-dir DIR` (a folder or a list of images) both go through
+// ImageFitter::fitFile, so a single fit and a batch fit start, search and write points the same
+// way; fitImages is the batch loop (progress, cancellation, summary CSV) the CLI and the studio
+// share. An image that cannot be read or fitted is a row of the summary, not the end of the batch.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <opencv2/core/mat.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/progress.hpp"
+#include "core/detect/face_detector.hpp"
+#include "core/fit/fitter.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/model/clm_model.hpp"
+
+namespace clm3d {
+
+// The image files of a batch. A folder: every .jpg, .jpeg, .png, .ppm and .bmp in it (extension
+// case-insensitive, not recursive), sorted by name. A file: a list with one image path per line,
+// relative paths taken from the list's folder, blank lines and lines starting with '#' ignored,
+// surrounding spaces and a Windows line end trimmed. Throws InputError naming the folder or list
+// when it does not exist, cannot be read, or yields no image.
+std::vector<std::filesystem::path> listBatchImages(const std::filesystem::path& folderOrList);
+
+// The start state of a points file (.pts, .ljson, .csv; a 68-point file converted to the model's
+// thesis25): the model fitted to its points. InputError naming the file for an unreadable file,
+// a wrong point count or too few points.
+FitState stateFromPointsFile(const ClmModel& model, const Camera& camera,
+                             const std::filesystem::path& path);
+
+// The start points of an image in an --init-dir folder: STEM.pts, STEM.ljson or STEM.csv, the
+// first that exists; nullopt when there is none.
+std::optional<std::filesystem::path> findPointsFile(const std::filesystem::path& folder,
+                                                    const std::string& stem);
+
+struct ImageFitSettings {
+  FitSettings fit;
+  DetectorKind detector = DetectorKind::Cascade;
+  double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every image
+};
+
+enum class ImageFitStatus { Ok, NoFace, Error };
+// "ok", "no-face", "error" (the summary's status column).
+const char* toString(ImageFitStatus status);
+
+struct ImageFitOutcome {
+  std::filesystem::path image;
+  ImageFitStatus status = ImageFitStatus::Error;
+  std::string message;  // NoFace and Error: one line naming the file and the problem
+  // Milliseconds of the search and of the face detection; NaN when not done (detection is not
+  // done when the search starts from given points).
+  double fitMilliseconds = std::numeric_limits<double>::quiet_NaN();
+  double detectMilliseconds = std::numeric_limits<double>::quiet_NaN();
+  std::optional<FitResult> fit;                                    // Ok only
+  double viewPitchDeg = std::numeric_limits<double>::quiet_NaN();  // centre of the final view
+  double viewYawDeg = std::numeric_limits<double>::quiet_NaN();
+  std::filesystem::path output;  // the points written (Ok with an output path), else empty
+};
+
+// Fits images one at a time with one model: the face detector is made on first use and kept, the
+// Fitter is kept while the image size stays the same. Not thread-safe; one per thread.
+class ImageFitter {
+ public:
+  // The model must outlive the fitter. Throws InputError for settings the model cannot honour.
+  ImageFitter(const ClmModel& model, const ImageFitSettings& settings = {});
+  ~ImageFitter();
+  ImageFitter(const ImageFitter&) = delete;
+  ImageFitter& operator=(const ImageFitter&) = delete;
+
+  // Reads `image`, starts from `startPoints` (a points file; empty: the face detector), fits and,
+  // when `output` is not empty, writes the model's points there (.pts, .ljson or .csv, by
+  // extension, atomically). Bad input (unreadable image or points file, no face, an unwritable
+  // output) comes back as the outcome's status and message, never as an exception; an Error the
+  // set-up throws (no cascade files, dlib missing from the build) propagates, since it would fail
+  // every image alike.
+  ImageFitOutcome fitFile(const std::filesystem::path& image,
+                          const std::filesystem::path& startPoints = {},
+                          const std::filesystem::path& output = {});
+
+  // The last image read and the Fitter that searched it (for an overlay), empty / null before the
+  // first search.
+  const cv::Mat& lastImage() const { return lastImage_; }
+  const Fitter* lastFitter() const { return fitter_.get(); }
+  const ClmModel& model() const { return *model_; }
+
+ private:
+  FaceDetector& detector();
+  Fitter& fitterFor(const cv::Mat& image);
+
+  const ClmModel* model_;
+  ImageFitSettings settings_;
+  std::unique_ptr<FaceDetector> detector_;
+  std::unique_ptr<Fitter> fitter_;
+  cv::Mat lastImage_;
+};
+
+struct BatchFitJob {
+  std::vector<std::filesystem::path> images;
+  std::filesystem::path outDir;   // STEM.pts per fitted image and summary.csv; created if absent
+  std::filesystem::path initDir;  // empty: detect every face; else start from STEM.pts/.ljson/.csv
+  std::string pointsExtension = ".pts";
+};
+
+struct BatchFitSummary {
+  std::vector<ImageFitOutcome> outcomes;  // in job order
+  int ok = 0;
+  int noFace = 0;
+  int errors = 0;
+  std::filesystem::path summaryCsv;
+};
+
+// The summary table: a header "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,
+// iterations,converged,error" and one row per outcome. Milliseconds with 3 decimals, the
+// confidence with 6, view angles in degrees; empty cells where there is no value. A cell holding a
+// comma, quote or line break is quoted as RFC 4180 says.
+std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes);
+
+// Called after each image with its 0-based index in the job.
+using ImageFitCallback = std::function<void(std::size_t index, const ImageFitOutcome&)>;
+
+// Fits every image of the job in order with ImageFitter::fitFile, writing OUT-DIR/STEM<ext> per
+// fitted image and OUT-DIR/summary.csv (atomically) at the end. An image whose stem repeats an
+// earlier one's is an error row (its points would overwrite the other's). With an init folder, an
+// image without a points file there is an error row. Progress goes 0..1 over the images, its stage
+// "fit K/N NAME 3.1 ms" (or "... no face" / "... error"). When cancelled (checked between
+// images) the summary of the images done so far is written and Cancelled thrown. Throws InputError,
+// before any image, when the output folder is an image's folder or the init folder (the points
+// would overwrite the mark-ups or starts there) or cannot be created, and when the summary cannot
+// be written.
+BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
+                          const ImageFitSettings& settings, const ProgressCallback& progress = {},
+                          const CancelToken* cancel = nullptr,
+                          const ImageFitCallback& onImage = {});
+
+}  // namespace clm3d

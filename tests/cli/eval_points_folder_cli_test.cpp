@@ -1,0 +1,176 @@
+// clm3d eval-points over folders through the real binary: 68-point and 25-point truths paired by
+// stem with two methods' predictions (.pts and .ljson), one prediction missing (a failure), the
+// per-method figures, the per-image CSV and the JSON report; and the usage and input errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/scheme/landmark_file.hpp"
+#include "core/scheme/scheme.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runClm3d;
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The thesis25 points of a 68-point mark-up whose eye centres are 40 pixels apart, moved by dx.
+LandmarkSet shifted(const LandmarkSet& points, double dx) {
+  LandmarkSet moved = points;
+  for (int i = 0; i < points.size(); ++i) {
+    if (points.has(i))
+      moved.set(i, Eigen::Vector2d(points.point(i).head<2>() + Eigen::Vector2d(dx, 0)));
+  }
+  return moved;
+}
+
+struct FolderFiles {
+  test::TempDir dir;
+  fs::path truth, methodA, methodB;
+  FolderFiles() {
+    truth = dir / "truth";
+    methodA = dir / "fits-a";
+    methodB = dir / "fits-b";
+    for (const fs::path& folder : {truth, methodA, methodB}) fs::create_directories(folder);
+    LandmarkSet ibug(68, 2);
+    for (int i = 0; i < 68; ++i) ibug.set(i, Eigen::Vector2d(30.0 + 2.0 * i, 90.0 + (i % 5)));
+    for (int i = 36; i < 42; ++i) ibug.set(i, Eigen::Vector2d(80.0, 50.0 + (i - 36)));
+    for (int i = 42; i < 48; ++i) ibug.set(i, Eigen::Vector2d(120.0, 50.0 + (i - 42)));
+    // Three images: two 68-point truths and one 25-point truth (23 comparable points each).
+    writeLandmarks(truth / "img1.pts", ibug, Scheme::ibug68());
+    writeLandmarks(truth / "img2.pts", ibug, Scheme::ibug68());
+    const LandmarkSet thesis = readLandmarks(truth / "img1.pts", &Scheme::thesis25());
+    writeLandmarks(truth / "img3.pts", thesis, Scheme::thesis25());
+    test::writeFile(truth / "img1.jpg", "an image beside its truth is ignored\n");
+    // Method A: img1 off by 0.1 eye distances, img2 by 0.2, img3 missing.
+    writeLandmarks(methodA / "img1.pts", shifted(thesis, 4.0), Scheme::thesis25());
+    writeLandmarks(methodA / "img2.pts", shifted(thesis, 8.0), Scheme::thesis25());
+    test::writeFile(methodA / "summary.csv", "not a prediction\n");
+    // Method B: every image off by 0.05, as LJSON.
+    for (const char* stem : {"img1", "img2", "img3"}) {
+      writeLandmarks(methodB / (std::string(stem) + ".ljson"), shifted(thesis, 2.0),
+                     Scheme::thesis25());
+    }
+  }
+};
+
+TEST(EvalPointsFolderCli, PairsByStemCountsMissingPredictionsAndWritesTheTable) {
+  const FolderFiles f;
+  const fs::path csv = f.dir / "per-image.csv";
+  const fs::path report = f.dir / "report.json";
+  const auto result = runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " +
+                               f.methodA.string() + " --pred-dir " + f.methodB.string() +
+                               " --csv " + csv.string() + " --out " + report.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "(3 images, scheme thesis25, all points)")) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "fits-a (" + f.methodA.string() +
+                           "): mean error 0.1500, median 0.1500 over 2/3 images; within 0.18: "
+                           "23/69 points (33.3%); missing predictions: 1"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output, "fits-b (" + f.methodB.string() +
+                                          "): mean error 0.0500, median 0.0500 over 3/3 images; "
+                                          "within 0.18: 69/69 points (100.0%); missing "
+                                          "predictions: 0"))
+      << result.output;
+
+  const std::string table = test::readFile(csv);
+  std::istringstream in(table);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 7U) << table;
+  EXPECT_EQ(rows[0],
+            "image,method,status,error,max_error,true_points,scored_points,found_points,"
+            "inter_ocular,prediction");
+  EXPECT_TRUE(contains(rows[1], "img1,fits-a,ok,0.100000,0.100000,23,23,23,40.000,")) << rows[1];
+  EXPECT_TRUE(contains(rows[3], "img2,fits-a,ok,0.200000,0.200000,23,23,0,40.000,")) << rows[3];
+  EXPECT_EQ(rows[5], "img3,fits-a,missing,,,23,,,,");
+  EXPECT_TRUE(contains(rows[6], "img3,fits-b,ok,0.050000,")) << rows[6];
+  EXPECT_TRUE(contains(rows[6], "img3.ljson")) << rows[6];
+
+  const auto json = nlohmann::json::parse(test::readFile(report));
+  EXPECT_EQ(json["format"], "clm3d-point-folder-evaluation");
+  EXPECT_EQ(json["images"], 3);
+  EXPECT_EQ(json["methods"][0]["missing"], 1);
+  EXPECT_NEAR(json["methods"][0]["median_error"].get<double>(), 0.15, 1e-9);
+  EXPECT_NEAR(json["methods"][1]["found_share"].get<double>(), 1.0, 1e-12);
+}
+
+TEST(EvalPointsFolderCli, ChosenPointsAndLabels) {
+  const FolderFiles f;
+  const auto result = runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " +
+                               f.methodB.string() + " --label mine --points 8,11 --json");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  EXPECT_EQ(json["methods"][0]["label"], "mine");
+  EXPECT_EQ(json["methods"][0]["true_points"], 6);
+  EXPECT_EQ(json["points"], nlohmann::json::array({8, 11}));
+}
+
+TEST(EvalPointsFolderCli, BadInputNamesTheFileAndMixedModesAreUsageErrors) {
+  const FolderFiles f;
+  LandmarkSet ten(10, 2);
+  for (int i = 0; i < 10; ++i) ten.set(i, Eigen::Vector2d(i, i));
+  const fs::path bad = f.dir / "bad";
+  fs::create_directories(bad);
+  test::writeFile(
+      bad / "img2.pts", "version: 1\nn_points: 10\n{\n" + [] {
+        std::string points;
+        for (int i = 0; i < 10; ++i) points += std::to_string(i + 1) + " 5\n";
+        return points;
+      }() + "}\n");
+  const auto wrongCount =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + bad.string());
+  EXPECT_EQ(wrongCount.exitCode, 1) << wrongCount.output;
+  EXPECT_TRUE(contains(wrongCount.output, (bad / "img2.pts").string())) << wrongCount.output;
+  EXPECT_TRUE(contains(wrongCount.output, "10 points")) << wrongCount.output;
+
+  const fs::path absent = f.dir / "absent";
+  const auto missing =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + absent.string());
+  EXPECT_EQ(missing.exitCode, 1) << missing.output;
+  EXPECT_TRUE(contains(missing.output, absent.string())) << missing.output;
+
+  const auto mixed = runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() +
+                              " --pred-dir " + f.methodA.string());
+  EXPECT_EQ(mixed.exitCode, 2) << mixed.output;
+  const auto both =
+      runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() + " --truth-dir " +
+               f.truth.string() + " --pred-dir " + f.methodA.string());
+  EXPECT_EQ(both.exitCode, 2) << both.output;
+  const auto csvWithFiles =
+      runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() + " --pred " +
+               (f.methodA / "img1.pts").string() + " --csv x.csv");
+  EXPECT_EQ(csvWithFiles.exitCode, 2) << csvWithFiles.output;
+  EXPECT_TRUE(contains(csvWithFiles.output, "--csv")) << csvWithFiles.output;
+  // The single-file mode is unchanged.
+  const auto single = runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() +
+                               " --pred " + (f.methodA / "img1.pts").string());
+  ASSERT_EQ(single.exitCode, 0) << single.output;
+  EXPECT_TRUE(contains(single.output, "error 0.1000 over 23/23 points")) << single.output;
+}
+
+TEST(EvalPointsFolderCli, LfpwTruthAgainstItselfScoresZero) {
+  CLM3D_REQUIRE_SHARED_DATA(data);
+  const fs::path truth = data / "photos" / "lfpw" / "test";
+  if (!fs::is_directory(truth)) GTEST_SKIP() << truth << " not found";
+  const auto result = runClm3d("eval-points --truth-dir " + truth.string() + " --pred-dir " +
+                               truth.string() + " --label self --json");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  EXPECT_EQ(json["images"], 224);
+  EXPECT_EQ(json["methods"][0]["missing"], 0);
+  EXPECT_NEAR(json["methods"][0]["mean_error"].get<double>(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace clm3d
