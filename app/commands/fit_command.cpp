@@ -73,7 +73,7 @@ void runSingleFit(const FitArgs& args) {
 void runBatchFit(const FitArgs& args) {
   if (args.outDir.empty()) throw CLI::ValidationError("--out-dir", "--images needs --out-dir DIR");
   BatchFitJob job;
-  job.images = listBatchImages(args.images);
+  job.images = listImages(args.images);
   job.outDir = args.outDir;
   job.initDir = args.initDir;
   if (!job.initDir.empty() && !fs::is_directory(job.initDir)) {

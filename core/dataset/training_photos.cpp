@@ -1,10 +1,7 @@
 #include "core/dataset/training_photos.hpp"
 
-#include <algorithm>
-#include <cctype>
-#include <fstream>
-
 #include "core/common/error.hpp"
+#include "core/common/image_list.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 
@@ -13,25 +10,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
-bool isImage(const fs::path& path) {
-  const std::string extension = lower(path.extension().string());
-  return extension == ".jpg" || extension == ".jpeg" || extension == ".png" ||
-         extension == ".bmp" || extension == ".ppm";
-}
-
 fs::path landmarkFileFor(const fs::path& image) {
-  for (const char* extension : {".pts", ".ljson", ".csv"}) {
-    fs::path candidate = image;
-    candidate.replace_extension(extension);
-    if (fs::is_regular_file(candidate)) return candidate;
-  }
-  throwInputError(image, "no landmark file beside the image (STEM.pts, .ljson or .csv)");
+  const auto file = findLandmarkFile(image.parent_path(), image.stem().string());
+  if (!file) throwInputError(image, "no landmark file beside the image (STEM.pts, .ljson or .csv)");
+  return *file;
 }
 
 // thesis25 points whose 68-point source is the jaw contour (cheeks and chin sides, 0-based).
@@ -40,38 +22,6 @@ bool fromJawContour(int thesisIndex) {
 }
 
 }  // namespace
-
-std::vector<fs::path> listImages(const fs::path& folderOrList) {
-  std::vector<fs::path> images;
-  std::error_code ec;
-  if (fs::is_directory(folderOrList, ec)) {
-    for (const auto& entry : fs::directory_iterator(folderOrList, ec)) {
-      if (entry.is_regular_file() && isImage(entry.path())) images.push_back(entry.path());
-    }
-    if (ec) throwInputError(folderOrList, "cannot list the folder: " + ec.message());
-    std::sort(images.begin(), images.end());
-    return images;
-  }
-  std::ifstream in(folderOrList);
-  if (!in) throwInputError(folderOrList, fs::exists(folderOrList, ec) ? "cannot read the list"
-                                                                      : "file not found");
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const auto begin = line.find_first_not_of(" \t\r");
-    if (begin == std::string::npos || line[begin] == '#') continue;
-    const auto end = line.find_last_not_of(" \t\r");
-    const fs::path image = (folderOrList.parent_path() / line.substr(begin, end - begin + 1))
-                               .lexically_normal();
-    if (!fs::is_regular_file(image)) {
-      throwInputError(folderOrList,
-                      "line " + std::to_string(number) + ": image not found: " + image.string());
-    }
-    images.push_back(image);
-  }
-  return images;
-}
 
 std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest) {
   const Scheme scheme = Scheme::byNameOrPath(manifest.scheme);
@@ -83,6 +33,7 @@ std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest) {
       images.resize(static_cast<std::size_t>(source.limit));
     }
     for (const fs::path& image : images) {
+      if (!fs::is_regular_file(image)) throwInputError(image, "image not found");
       const fs::path file = landmarkFileFor(image);
       LandmarkSet read = readLandmarks(file);
       TrainingPhoto photo;

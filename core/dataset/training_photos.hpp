@@ -23,11 +23,6 @@ struct TrainingPhoto {
   std::vector<bool> trusted;    // per landmark: present and trusted to train patches
 };
 
-// The images of a folder (.jpg, .jpeg, .png, .bmp, .ppm, any case), sorted by name, or of a list
-// file (one path per line, relative to its folder; blank lines and lines starting with # are
-// skipped). InputError naming the folder or list if it cannot be read or a listed image is missing.
-std::vector<std::filesystem::path> listImages(const std::filesystem::path& folderOrList);
-
 // Every photo of every photos source, in manifest order. InputError naming the file: an image
 // without a landmark file, a landmark file that is neither 68 points nor the scheme's size.
 std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest);

@@ -96,4 +96,14 @@ void writeLandmarks(const std::filesystem::path& path, const LandmarkSet& points
   writeTextAtomically(path, text);
 }
 
+std::optional<std::filesystem::path> findLandmarkFile(const std::filesystem::path& folder,
+                                                      const std::string& stem) {
+  for (const char* extension : {".pts", ".ljson", ".csv"}) {
+    const std::filesystem::path candidate = folder / (stem + extension);
+    std::error_code error;
+    if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+  }
+  return std::nullopt;
+}
+
 }  // namespace clm3d

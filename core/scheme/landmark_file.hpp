@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/scheme.hpp"
@@ -22,6 +24,11 @@ LandmarkFormat landmarkFormatOf(const std::filesystem::path& path);
 // Without `expected`, LJSON layouts of the built-in scheme of the same size apply, and CSV rows are
 // placed in the built-in scheme holding all their ids (else kept in file order).
 LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expected = nullptr);
+
+// The landmark file STEM.pts, STEM.ljson or STEM.csv in `folder` (the first that exists, in that
+// order), or nothing.
+std::optional<std::filesystem::path> findLandmarkFile(const std::filesystem::path& folder,
+                                                      const std::string& stem);
 
 // Writes atomically in the format of the extension; ids and labels come from the scheme, whose
 // size must match (InputError otherwise).

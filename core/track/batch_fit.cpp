@@ -28,26 +28,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-std::string lowerExtension(const fs::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
-bool isImageFile(const fs::path& path) {
-  static const std::vector<std::string> kExtensions{".jpg", ".jpeg", ".png", ".ppm", ".bmp"};
-  const std::string extension = lowerExtension(path);
-  return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
-}
-
-std::string trimmed(const std::string& line) {
-  const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
-  auto begin = std::find_if_not(line.begin(), line.end(), space);
-  auto end = std::find_if_not(line.rbegin(), std::string::const_reverse_iterator(begin), space);
-  return std::string(begin, end.base());
-}
-
 // Locale-independent fixed-point text; empty for NaN.
 std::string fixedCell(double value, int decimals) {
   if (!std::isfinite(value)) return {};
@@ -67,35 +47,6 @@ ImageFitOutcome failed(const fs::path& image, ImageFitStatus status, std::string
 
 }  // namespace
 
-std::vector<fs::path> listBatchImages(const fs::path& folderOrList) {
-  std::error_code error;
-  const fs::file_status status = fs::status(folderOrList, error);
-  if (!fs::exists(status)) throwInputError(folderOrList, "no such folder or image list");
-  std::vector<fs::path> images;
-  if (fs::is_directory(status)) {
-    for (const fs::directory_entry& entry : fs::directory_iterator(folderOrList, error)) {
-      if (isImageFile(entry.path()) && !entry.is_directory()) images.push_back(entry.path());
-    }
-    if (error) throwInputError(folderOrList, "cannot list the folder: " + error.message());
-    std::sort(images.begin(), images.end());
-    if (images.empty()) {
-      throwInputError(folderOrList, "no image (.jpg, .jpeg, .png, .ppm, .bmp) in the folder");
-    }
-    return images;
-  }
-  std::istringstream lines(readTextFile(folderOrList));
-  const fs::path base = folderOrList.parent_path();
-  std::string line;
-  while (std::getline(lines, line)) {
-    const std::string entry = trimmed(line);
-    if (entry.empty() || entry.front() == '#') continue;
-    const fs::path path(entry);
-    images.push_back(path.is_absolute() ? path : base / path);
-  }
-  if (images.empty()) throwInputError(folderOrList, "the image list names no image");
-  return images;
-}
-
 FitState stateFromPointsFile(const ClmModel& model, const Camera& camera, const fs::path& path) {
   const Scheme scheme = model.scheme();
   const LandmarkSet given = readLandmarks(path, &scheme);
@@ -111,15 +62,6 @@ FitState stateFromPointsFile(const ClmModel& model, const Camera& camera, const 
   } catch (const InputError& e) {
     throw InputError(fileMessage(path, e.what()));
   }
-}
-
-std::optional<fs::path> findPointsFile(const fs::path& folder, const std::string& stem) {
-  for (const char* extension : {".pts", ".ljson", ".csv"}) {
-    const fs::path candidate = folder / (stem + extension);
-    std::error_code error;
-    if (fs::is_regular_file(candidate, error)) return candidate;
-  }
-  return std::nullopt;
 }
 
 const char* toString(ImageFitStatus status) {
@@ -274,7 +216,7 @@ BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
           fileMessage(image, "has the same stem as " + first->second.string() +
                                  ", whose points are written to " + stem + job.pointsExtension));
     } else if (!job.initDir.empty()) {
-      const auto start = findPointsFile(job.initDir, stem);
+      const auto start = findLandmarkFile(job.initDir, stem);
       outcome =
           start ? fitter.fitFile(image, *start, job.outDir / (stem + job.pointsExtension))
                 : failed(image, ImageFitStatus::Error,

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/image_list.hpp"
 #include "core/common/progress.hpp"
 #include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
@@ -22,23 +23,11 @@
 
 namespace clm3d {
 
-// The image files of a batch. A folder: every .jpg, .jpeg, .png, .ppm and .bmp in it (extension
-// case-insensitive, not recursive), sorted by name. A file: a list with one image path per line,
-// relative paths taken from the list's folder, blank lines and lines starting with '#' ignored,
-// surrounding spaces and a Windows line end trimmed. Throws InputError naming the folder or list
-// when it does not exist, cannot be read, or yields no image.
-std::vector<std::filesystem::path> listBatchImages(const std::filesystem::path& folderOrList);
-
 // The start state of a points file (.pts, .ljson, .csv; a 68-point file converted to the model's
 // thesis25): the model fitted to its points. InputError naming the file for an unreadable file,
 // a wrong point count or too few points.
 FitState stateFromPointsFile(const ClmModel& model, const Camera& camera,
                              const std::filesystem::path& path);
-
-// The start points of an image in an --init-dir folder: STEM.pts, STEM.ljson or STEM.csv, the
-// first that exists; nullopt when there is none.
-std::optional<std::filesystem::path> findPointsFile(const std::filesystem::path& folder,
-                                                    const std::string& stem);
 
 struct ImageFitSettings {
   FitSettings fit;

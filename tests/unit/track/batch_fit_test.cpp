@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.hpp"
+#include "core/scheme/landmark_file.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -19,14 +20,14 @@ TEST(BatchImages, AFolderGivesItsImagesSortedAndAListItsLines) {
     test::writeFile(dir / name, "x");
   }
   fs::create_directories(dir / "sub.png");  // a folder named like an image is not one
-  const auto images = listBatchImages(dir.path());
+  const auto images = listImages(dir.path());
   ASSERT_EQ(images.size(), 5U);
   EXPECT_EQ(images[0].filename(), "a.png");
   EXPECT_EQ(images[1].filename(), "b.JPG");
   EXPECT_EQ(images[4].filename(), "e.bmp");
 
   test::writeFile(dir / "list.txt", "# comment\n\n  a.png \r\n/abs/x.jpg\nsub/y.png\n");
-  const auto listed = listBatchImages(dir / "list.txt");
+  const auto listed = listImages(dir / "list.txt");
   ASSERT_EQ(listed.size(), 3U);
   EXPECT_EQ(listed[0], dir / "a.png");
   EXPECT_EQ(listed[1], fs::path("/abs/x.jpg"));
@@ -34,22 +35,22 @@ TEST(BatchImages, AFolderGivesItsImagesSortedAndAListItsLines) {
 
   test::writeFile(dir / "empty.txt", "# nothing here\n");
   try {
-    listBatchImages(dir / "empty.txt");
+    listImages(dir / "empty.txt");
     FAIL() << "no error for an empty list";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("empty.txt"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(listBatchImages(dir / "absent"), InputError);
+  EXPECT_THROW(listImages(dir / "absent"), InputError);
 }
 
 TEST(BatchImages, StartPointsArePtsThenLjsonThenCsv) {
   const test::TempDir dir;
   test::writeFile(dir / "x.csv", "x");
   test::writeFile(dir / "x.ljson", "x");
-  EXPECT_EQ(findPointsFile(dir.path(), "x"), dir / "x.ljson");
+  EXPECT_EQ(findLandmarkFile(dir.path(), "x"), dir / "x.ljson");
   test::writeFile(dir / "x.pts", "x");
-  EXPECT_EQ(findPointsFile(dir.path(), "x"), dir / "x.pts");
-  EXPECT_FALSE(findPointsFile(dir.path(), "y").has_value());
+  EXPECT_EQ(findLandmarkFile(dir.path(), "x"), dir / "x.pts");
+  EXPECT_FALSE(findLandmarkFile(dir.path(), "y").has_value());
 }
 
 TEST(BatchSummary, EmptyCellsForMissingValuesAndQuotedMessages) {
