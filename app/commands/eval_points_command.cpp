@@ -12,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/eval/confidence_roc.hpp"
 #include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"
 #include "core/scheme/scheme.hpp"
@@ -33,6 +34,8 @@ struct EvalPointsArgs {
   double threshold = 0.18;
   bool json = false;
   fs::path out;
+  bool roc = false;
+  double wrongAbove = 0.15;
 };
 
 void runEvalPoints(const EvalPointsArgs& args) {
@@ -49,6 +52,9 @@ void runEvalPoints(const EvalPointsArgs& args) {
   if (folders && (args.truthDir.empty() || args.predictionDirs.empty())) {
     throw CLI::ValidationError("--truth-dir/--pred-dir",
                                "folders need both --truth-dir and --pred-dir");
+  }
+  if (files && args.roc) {
+    throw CLI::ValidationError("--roc", "the confidence ROC goes with --truth-dir");
   }
   if (files && !args.csv.empty()) {
     throw CLI::ValidationError("--csv", "the per-image table goes with --truth-dir");
@@ -74,6 +80,15 @@ void runEvalPoints(const EvalPointsArgs& args) {
     if (!args.csv.empty()) {
       writeTextAtomically(args.csv, formatPointFolderCsv(report));
       notes << "per-image table: " << args.csv.string() << '\n';
+    }
+    if (args.roc) {
+      const std::vector<ScoredFit> fits = scoredFitsFromSummaries(report);
+      if (fits.empty()) {
+        throw InputError(
+            "--roc: no prediction folder has a summary.csv with confidences (write "
+            "them with clm3d fit --images --out-dir)");
+      }
+      notes << formatConfidenceRoc(confidenceRoc(fits, args.wrongAbove));
     }
     return;
   }
@@ -124,6 +139,14 @@ void addEvalPointsCommand(CLI::App& root) {
       ->default_val(0.18)
       ->check(CLI::Range(1e-6, 100.0));
   command->add_flag("--json", args->json, "Print the report as JSON instead of text");
+  command->add_flag("--roc", args->roc,
+                    "With --pred-dir folders written by clm3d fit --images: how well the fits' "
+                    "confidence (their summary.csv) tells right fits from wrong ones");
+  command
+      ->add_option("--wrong-above", args->wrongAbove,
+                   "For --roc: a fit whose error exceeds this is wrong")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10.0));
   command->add_option("--out", args->out, "Also write the JSON report to this file");
   command->callback([args] { runEvalPoints(*args); });
 }

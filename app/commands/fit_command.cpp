@@ -31,21 +31,24 @@ struct FitArgs {
   fs::path model, image, init, out, overlay;
   fs::path images, outDir, initDir;
   bool quiet = false;
+  double startOffset = 0.0;
   FitOptions fit;
 };
 
-ImageFitSettings imageFitSettings(const FitOptions& options) {
+ImageFitSettings imageFitSettings(const FitArgs& args) {
   ImageFitSettings settings;
-  settings.fit = options.settings();
-  settings.detector = options.detectorKind();
-  settings.verticalFovDeg = options.fovDeg;
+  settings.fit = args.fit.settings();
+  settings.detector = args.fit.detectorKind();
+  settings.verticalFovDeg = args.fit.fovDeg;
+  settings.startOffset = args.startOffset;
+  settings.startOffsetSeed = args.fit.seed;
   return settings;
 }
 
 void runSingleFit(const FitArgs& args) {
   if (args.out.empty()) throw CLI::ValidationError("--out", "--image needs --out F.pts");
   const ClmModel model = loadModel(args.model);
-  ImageFitter fitter(model, imageFitSettings(args.fit));
+  ImageFitter fitter(model, imageFitSettings(args));
   const ImageFitOutcome outcome = fitter.fitFile(args.image, args.init, args.out);
   if (outcome.status == ImageFitStatus::NoFace) {
     throw InputError(outcome.message + " (give the start points with --init)");
@@ -88,7 +91,7 @@ void runBatchFit(const FitArgs& args) {
   };
   BatchFitSummary summary;
   try {
-    summary = fitImages(model, job, imageFitSettings(args.fit), progress, &token);
+    summary = fitImages(model, job, imageFitSettings(args), progress, &token);
   } catch (...) {
     std::signal(SIGINT, previous);
     gCancel = nullptr;
@@ -157,6 +160,12 @@ void addFitCommand(CLI::App& root) {
                       "with --images: start each image from STEM.pts, .ljson or .csv in this "
                       "folder instead of the face detector");
   command->add_flag("--quiet", args->quiet, "with --images: no per-image progress on stderr");
+  command
+      ->add_option("--start-offset", args->startOffset,
+                   "move every start by this share of its eye distance, in a direction drawn per "
+                   "image from --seed (failure-detection experiments: wrong fits on purpose)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 5.0));
   addFitOptions(*command, args->fit);
   command->callback([args] { runFit(*args); });
 }

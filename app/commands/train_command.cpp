@@ -188,6 +188,17 @@ void addTrainCommand(CLI::App& root) {
                    "optimisers only; rlms needs experts)")
       ->default_val(args->settings.expertRadius)
       ->check(CLI::Range(0, 16));
+  command
+      ->add_option("--expert-ridge", args->settings.expertRidge,
+                   "Ridge weight of the experts' regression, relative to the data's mean variance")
+      ->default_val(args->settings.expertRidge)
+      ->check(CLI::Range(1e-4, 100.0));
+  command
+      ->add_option("--photo-jitter", args->settings.photoJitter,
+                   "Perturbed placements (scale, roll, shift) of each training photo beside its "
+                   "exact one")
+      ->default_val(args->settings.photoJitter)
+      ->check(CLI::Range(0, 20));
   command->callback([args] { runTrain(*args); });
 }
 

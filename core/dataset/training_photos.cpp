@@ -21,6 +21,11 @@ bool fromJawContour(int thesisIndex) {
   return thesisIndex == 19 || thesisIndex == 20 || thesisIndex == 22 || thesisIndex == 23;
 }
 
+// Point 1, the centre between the eyes, is the midpoint of the inner eye corners in a converted
+// 68-point mark-up: a construction, where the 3D annotations put the point on the bridge of the
+// nose, above and in front of that line. Its patches come from the renders only.
+constexpr int kCentreBetweenTheEyes = 0;
+
 }  // namespace
 
 std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest) {
@@ -53,7 +58,8 @@ std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest) {
       photo.trusted.assign(static_cast<std::size_t>(n), false);
       for (int i = 0; i < n; ++i) {
         photo.trusted[static_cast<std::size_t>(i)] =
-            photo.points.has(i) && !(converted && !source.jaw && fromJawContour(i));
+            photo.points.has(i) &&
+            !(converted && (i == kCentreBetweenTheEyes || (!source.jaw && fromJawContour(i))));
       }
       photos.push_back(std::move(photo));
     }

@@ -1,9 +1,9 @@
 // The annotated photos of a manifest's `photos` sources, listed and their landmark files read
 // (the images are read later, by the trainer, one at a time): which landmarks of each photo are
-// trusted to train patches. A 68-point iBUG mark-up converted to thesis25 trusts the 19 points
-// with an exact counterpart (the chin centre among them); the cheek and chin-side points taken
-// from the sliding jaw contour only when the source says `jaw`, the earlobes never (they have no
-// counterpart).
+// trusted to train patches. A 68-point iBUG mark-up converted to thesis25 trusts the 18 points
+// with an exact counterpart (the chin centre among them) but point 1 (the centre between the eyes,
+// there only the midpoint of the inner eye corners); the cheek and chin-side points taken from the
+// sliding jaw contour only when the source says `jaw`, the earlobes never (no counterpart).
 #pragma once
 
 #include <filesystem>

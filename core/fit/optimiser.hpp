@@ -28,7 +28,7 @@ struct OptimiserSettings {
   // weight of the shape prior in squared level pixels (Saragih et al.'s regularisation r).
   int rlmsRadius = 6;
   double rlmsSigma = 1.5;
-  double rlmsRegularisation = 4.0;
+  double rlmsRegularisation = 1.0;
 };
 
 class Optimiser {

@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <numbers>
 #include <opencv2/core.hpp>
 #include <sstream>
 #include <system_error>
@@ -14,6 +16,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/csv_cell.hpp"
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
@@ -43,6 +46,21 @@ ImageFitOutcome failed(const fs::path& image, ImageFitStatus status, std::string
   outcome.status = status;
   outcome.message = std::move(message);
   return outcome;
+}
+
+// The start moved in the image plane by `share` of its projected eye distance, in a direction
+// drawn from `key`.
+FitState offsetStart(const ClmModel& model, const Fitter& fitter, FitState start, double share,
+                     std::uint64_t key) {
+  const Eigen::Matrix2Xd points = fitter.project(start);
+  const auto [left, right] = model.scheme().normalisationPair();
+  const double eyes = (points.col(left) - points.col(right)).norm();
+  SplitMixRandom random(key);
+  const double angle = random.uniform(0.0, 2.0 * std::numbers::pi);
+  const double mmPerPixel = -start.pose.translation.z() / fitter.camera().focalY();
+  start.pose.translation.x() += share * eyes * std::cos(angle) * mmPerPixel;
+  start.pose.translation.y() -= share * eyes * std::sin(angle) * mmPerPixel;
+  return start;
 }
 
 }  // namespace
@@ -121,6 +139,11 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
         return outcome;
       }
       outcome.detectMilliseconds = millisecondsSince(begin);
+    }
+    if (settings_.startOffset > 0.0) {
+      start = offsetStart(
+          *model_, fitter, start, settings_.startOffset,
+          mixKey(settings_.startOffsetSeed, std::hash<std::string>{}(image.stem().string())));
     }
     const auto begin = std::chrono::steady_clock::now();
     FitResult fit = fitter.fit(lastImage_, start);

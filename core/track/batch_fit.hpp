@@ -5,6 +5,7 @@
 // share. An image that cannot be read or fitted is a row of the summary, not the end of the batch.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -33,6 +34,11 @@ struct ImageFitSettings {
   FitSettings fit;
   DetectorKind detector = DetectorKind::Cascade;
   double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every image
+  // Failure-detection experiments: every start moved by this share of its inter-ocular distance
+  // in a direction drawn per image (seeded by the image's stem and startOffsetSeed), so that a
+  // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
+  double startOffset = 0.0;
+  std::uint64_t startOffsetSeed = 1;
 };
 
 enum class ImageFitStatus { Ok, NoFace, Error };

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "core/common/error.hpp"
+#include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/image/pyramid.hpp"
@@ -77,9 +78,16 @@ double inPlaneAngle(const Eigen::Matrix2Xd& upright, const Eigen::Matrix2Xd& tur
 
 // One copy placed: fitted, turned upright, scaled, sampled. Returns false (with the reason) when
 // it cannot be used.
+// A perturbation of a photo's placement, like a render's: relative scale, in-plane rotation
+// (degrees) and shift (pixels at the finest scale).
+struct Jitter {
+  double scale = 1.0, rollDeg = 0.0;
+  Eigen::Vector2d shift{0.0, 0.0};
+};
+
 bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& settings,
-               const std::vector<ViewCentre>& views, PhotoSample& sample, PhotoPlacement& placed,
-               std::string& why) {
+               const std::vector<ViewCentre>& views, const std::vector<Jitter>& jitters,
+               std::vector<PhotoSample>& samples, PhotoPlacement& placed, std::string& why) {
   const Camera camera = Camera::fromVerticalFov(copy.image.cols, copy.image.rows, kPhotoFovDeg);
   FitState state;
   try {
@@ -91,7 +99,7 @@ bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& set
   placed.pitchDeg = degrees(state.pose.pitch);
   placed.yawDeg = degrees(state.pose.yaw);
   placed.rollDeg = degrees(state.pose.roll);
-  sample.view = nearestView(views, placed.pitchDeg, placed.yawDeg);
+  const int view = nearestView(views, placed.pitchDeg, placed.yawDeg);
 
   // Scale: the fitted 3D eye distance at the face's depth, as frameSample sizes the renders.
   const auto [left, right] = model.scheme().normalisationPair();
@@ -125,32 +133,40 @@ bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& set
     from = shrink(centre);
     remaining = scale * copy.image.cols / source.cols;
   }
-  // Canvas pixel q = remaining * Rot(-angle) (x - from) + canvas centre, with Rot as sampleRegion.
   const int size = settings.renderSize();
-  const double c = std::cos(-angle) * remaining;
-  const double s = std::sin(-angle) * remaining;
   const Eigen::Vector2d middle((size - 1) / 2.0, (size - 1) / 2.0);
-  Eigen::Matrix<double, 2, 3> map;
-  map << c, s, middle.x() - c * from.x() - s * from.y(),  //
-      -s, c, middle.y() + s * from.x() - c * from.y();
-  cv::Mat warped;
-  const cv::Matx23d cvMap(map(0, 0), map(0, 1), map(0, 2), map(1, 0), map(1, 1), map(1, 2));
-  cv::warpAffine(source, warped, cvMap, cv::Size(size, size), cv::INTER_LINEAR,
-                 cv::BORDER_REPLICATE);
-  Eigen::Matrix2Xd canvasPoints(2, points.cols());
-  for (Eigen::Index i = 0; i < points.cols(); ++i) {
-    canvasPoints.col(i) = map.leftCols<2>() * points.col(i) + map.col(2);
+  for (const Jitter& jitter : jitters) {
+    // Canvas pixel q = s Rot(-angle + jitter) (x - from) + canvas centre + shift, with Rot as
+    // sampleRegion's.
+    const double turn = -angle + radians(jitter.rollDeg);
+    const double c = std::cos(turn) * remaining * jitter.scale;
+    const double s = std::sin(turn) * remaining * jitter.scale;
+    const Eigen::Vector2d target = middle + jitter.shift;
+    Eigen::Matrix<double, 2, 3> map;
+    map << c, s, target.x() - c * from.x() - s * from.y(),  //
+        -s, c, target.y() + s * from.x() - c * from.y();
+    cv::Mat warped;
+    const cv::Matx23d cvMap(map(0, 0), map(0, 1), map(0, 2), map(1, 0), map(1, 1), map(1, 2));
+    cv::warpAffine(source, warped, cvMap, cv::Size(size, size), cv::INTER_LINEAR,
+                   cv::BORDER_REPLICATE);
+    Eigen::Matrix2Xd canvasPoints(2, points.cols());
+    for (Eigen::Index i = 0; i < points.cols(); ++i) {
+      canvasPoints.col(i) = map.leftCols<2>() * points.col(i) + map.col(2);
+    }
+    PhotoSample sample;
+    sample.view = view;
+    sample.patches =
+        extractPatches(toGreyFloat(warped), cv::Mat(), canvasPoints, copy.trusted, settings);
+    samples.push_back(std::move(sample));
   }
-  const cv::Mat grey = toGreyFloat(warped);
-  sample.patches = extractPatches(grey, cv::Mat(), canvasPoints, copy.trusted, settings);
   return true;
 }
 
 }  // namespace
 
 std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& photos,
-                                             const std::string& schemeJson,
-                                             const ShapeModel& shape, const TrainSettings& settings,
+                                             const std::string& schemeJson, const ShapeModel& shape,
+                                             const TrainSettings& settings,
                                              std::vector<PhotoPlacement>* placements,
                                              const ProgressCallback& progress,
                                              const CancelToken* cancel) {
@@ -192,11 +208,19 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
           const Copy flipped = mirrored(original, scheme);
           for (int copyIndex = 0; copyIndex < 2; ++copyIndex) {
             const Copy& copy = copyIndex == 0 ? original : flipped;
-            PhotoSample sample;
-            sample.id = photo.id + (copyIndex == 0 ? "" : " (mirrored)");
+            // The placement itself, then settings.photoJitter perturbed ones.
+            std::vector<Jitter> jitters(1);
+            SplitMixRandom random(mixKey(mixKey(settings.seed, k), copyIndex));
+            const PerturbationSettings& p = settings.perturbation;
+            for (int j = 0; j < settings.photoJitter; ++j) {
+              jitters.push_back({1.0 + random.symmetric(p.scale), random.symmetric(p.rotationDeg),
+                                 Eigen::Vector2d(random.symmetric(p.shiftPixels),
+                                                 random.symmetric(p.shiftPixels))});
+            }
+            std::vector<PhotoSample> placedSamples;
             PhotoPlacement pose;
             std::string why;
-            if (!placeCopy(copy, model, settings, views, sample, pose, why)) {
+            if (!placeCopy(copy, model, settings, views, jitters, placedSamples, pose, why)) {
               placement.skipped = why;
               break;
             }
@@ -205,8 +229,12 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
               placement.yawDeg = pose.yawDeg;
               placement.rollDeg = pose.rollDeg;
             }
-            if (mirror && views[static_cast<std::size_t>(sample.view)].yawDeg > 0) continue;
-            results[k].push_back(std::move(sample));
+            const int view = placedSamples.front().view;
+            if (mirror && views[static_cast<std::size_t>(view)].yawDeg > 0) continue;
+            for (PhotoSample& sample : placedSamples) {
+              sample.id = photo.id + (copyIndex == 0 ? "" : " (mirrored)");
+              results[k].push_back(std::move(sample));
+            }
             ++placement.samples;
           }
         }

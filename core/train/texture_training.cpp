@@ -23,13 +23,13 @@ namespace {
 // order, so the result is the same whichever thread rendered them, then the view's photos in
 // input order.
 struct ViewSamples {
-  std::vector<Eigen::MatrixXf> grey;     // per scale: (P * n) x (N + photos)
-  std::vector<Eigen::MatrixXf> alpha;    // per scale: (P * n) x N (renders only)
-  std::vector<Eigen::MatrixXf> regions;  // per scale: (Q * n) x (N + photos), experts only
-  std::vector<std::vector<bool>> has;    // per column: landmarks whose patch is real
+  std::vector<Eigen::MatrixXf> grey;      // per scale: (P * n) x (N + photos)
+  std::vector<Eigen::MatrixXf> alpha;     // per scale: (P * n) x N (renders only)
+  std::vector<Eigen::MatrixXf> regions;   // per scale: (Q * n) x (N + photos), experts only
+  std::vector<std::vector<bool>> has;     // per column: landmarks whose patch is real
   std::vector<std::vector<bool>> usable;  // per column: landmarks that train the experts
-  std::vector<int> visibleCount;         // per landmark (renders only)
-  std::vector<int> presentCount;         // per landmark (renders where the landmark exists)
+  std::vector<int> visibleCount;          // per landmark (renders only)
+  std::vector<int> presentCount;          // per landmark (renders where the landmark exists)
 };
 
 int threadCount(const TrainSettings& settings, int jobs) {
@@ -74,18 +74,22 @@ PatchModel buildPatchModel(const ViewSamples& samples, const std::vector<int>& l
   for (std::size_t e = 0; e < landmarks.size(); ++e) {
     const Eigen::Index source = Eigen::Index(landmarks[e]) * pixels;
     data.middleRows(Eigen::Index(e) * pixels, pixels) = samples.grey[s].middleRows(source, pixels);
-    const Eigen::VectorXf meanAlpha =
-        samples.alpha[s].middleRows(source, pixels).rowwise().mean();
+    const Eigen::VectorXf meanAlpha = samples.alpha[s].middleRows(source, pixels).rowwise().mean();
     model.alpha.push_back(meanAlpha.cwiseMax(0.0f).cwiseMin(1.0f));
   }
   model.pca = fitPca(data, settings.textureVariance, settings.textureMaxModes);
   return model;
 }
 
+// A view's expert learns from photos alone once it has at least this many photo regions of the
+// landmark; with fewer, from the renders and the photos together.
+constexpr int kPhotosForPhotoOnlyExperts = 100;
+
 // One expert per (rendered view, scale, visible landmark), on a pool of threads.
 void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& models,
-                  const std::vector<int>& rendered, const TrainSettings& settings,
-                  const ProgressCallback& progress, const CancelToken* cancel) {
+                  const std::vector<int>& rendered, Eigen::Index renderColumns,
+                  const TrainSettings& settings, const ProgressCallback& progress,
+                  const CancelToken* cancel) {
   struct Job {
     int view, scale, entry;
   };
@@ -114,15 +118,24 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
         if (cancel) cancel->throwIfCancelled();
         const Job& job = jobs[j];
         const ViewSamples& c = collected[static_cast<std::size_t>(job.view)];
-        PatchModel& patches = models[static_cast<std::size_t>(job.view)]
-                                  .scales[static_cast<std::size_t>(job.scale)];
+        PatchModel& patches =
+            models[static_cast<std::size_t>(job.view)].scales[static_cast<std::size_t>(job.scale)];
         const int landmark = patches.landmarks[static_cast<std::size_t>(job.entry)];
         const Eigen::MatrixXf& all = c.regions[static_cast<std::size_t>(job.scale)];
-        std::vector<Eigen::Index> columns;
+        // Photos where there are enough of them: the renders' landmarks were placed on 3D scans by
+        // another hand than the photos' mark-up, and an expert taught both places blurs between
+        // them. The photos define where a point is on a real face.
+        std::vector<Eigen::Index> renders;
+        std::vector<Eigen::Index> photoColumns;
         for (std::size_t col = 0; col < c.usable.size(); ++col) {
           if (c.usable[col][static_cast<std::size_t>(landmark)]) {
-            columns.push_back(static_cast<Eigen::Index>(col));
+            (static_cast<Eigen::Index>(col) < renderColumns ? renders : photoColumns)
+                .push_back(static_cast<Eigen::Index>(col));
           }
+        }
+        std::vector<Eigen::Index> columns = std::move(photoColumns);
+        if (static_cast<int>(columns.size()) < kPhotosForPhotoOnlyExperts) {
+          columns.insert(columns.begin(), renders.begin(), renders.end());
         }
         if (columns.empty()) continue;  // never seen: the expert stays empty, validate() says so
         Eigen::MatrixXf regions(regionPixels, static_cast<Eigen::Index>(columns.size()));
@@ -357,8 +370,8 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
       model.scales.push_back(buildPatchModel(c, visibleLandmarks, s, settings));
     }
     if (progress) {
-      progress((experts ? 0.8 : 0.9) + (experts ? 0.05 : 0.1) * ++built /
-                                           static_cast<double>(rendered.size()),
+      progress((experts ? 0.8 : 0.9) +
+                   (experts ? 0.05 : 0.1) * ++built / static_cast<double>(rendered.size()),
                "pca");
     }
   }
@@ -366,7 +379,7 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
     const auto expertProgress = [&](double fraction, std::string_view stage) {
       if (progress) progress(0.85 + 0.15 * fraction, stage);
     };
-    trainExperts(collected, models, rendered, settings, expertProgress, cancel);
+    trainExperts(collected, models, rendered, columns, settings, expertProgress, cancel);
   }
   collected.clear();
   for (std::size_t v = 0; v < views.size(); ++v) {

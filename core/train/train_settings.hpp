@@ -49,7 +49,10 @@ struct TrainSettings {
   // up to this many pixels at every scale; 0 trains none (a model for the template optimisers).
   int expertRadius = 6;
   double expertRidge = 0.1;  // ridge weight of the experts' regression
-  int supersample = 2;            // renderer anti-aliasing
+  // Perturbed placements of each training photo beside its exact one (scale, roll and shift
+  // drawn within `perturbation`'s ranges, as the renders'): more, and more varied, photo samples.
+  int photoJitter = 2;
+  int supersample = 2;  // renderer anti-aliasing
   // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
   // the manifest unless augmentationFromManifest is false (clm3d train --no-augmentation).
   AugmentationSettings augmentation;

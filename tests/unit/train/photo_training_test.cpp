@@ -32,6 +32,11 @@ const SynthHead& head() {
   return h;
 }
 
+const SynthHead& otherHead() {
+  static const SynthHead h = generateHead(2, {}, SynthOptions{1.5, 512});
+  return h;
+}
+
 TrainSettings settings() {
   TrainSettings s;
   s.yawsDeg = {-30, 0, 30};
@@ -43,6 +48,7 @@ TrainSettings settings() {
   s.threads = 2;
   s.expertRadius = 4;
   s.textureMaxModes = 8;
+  s.photoJitter = 0;
   return s;
 }
 
@@ -81,7 +87,7 @@ struct PhotoFixture {
     writePhoto(dir / "photos", "a-frontal", 0.0, 8.0);
     writePhoto(dir / "photos", "b-turned", -25.0, 0.0);
     manifest = dir / "manifest.json";
-    test::writeFile(manifest, R"({"procedural": [{"seeds": "1-2"}],
+    test::writeFile(manifest, R"({"version": 1, "procedural": [{"seeds": "1-2"}],
                                   "photos": [{"folder": "photos"}]})");
   }
 };
@@ -104,6 +110,7 @@ TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
   TrainingInput input;
   input.schemeJson = schemeJsonFor("thesis25");
   input.subjects.push_back({"head1", &head().mesh, &head().landmarks});
+  input.subjects.push_back({"head2", &otherHead().mesh, &otherHead().landmarks});
   const ClmModel shapeOnly = trainModel(input, s);  // for its shape model
   std::vector<PhotoPlacement> placements;
   const std::vector<PhotoSample> samples =
@@ -140,6 +147,16 @@ TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
   // Expert regions at both scales, (12 + 2 x 4)^2 values per landmark.
   ASSERT_EQ(samples[0].patches.regions.size(), 2u);
   EXPECT_EQ(samples[0].patches.regions[1].rows(), 20 * 20);
+
+  // With jitter, each placed copy also gives perturbed placements, in the same view.
+  TrainSettings jittered = s;
+  jittered.photoJitter = 2;
+  const std::vector<PhotoSample> more =
+      preparePhotoSamples(photos, input.schemeJson, shapeOnly.shape, jittered);
+  ASSERT_EQ(more.size(), 9u);
+  EXPECT_EQ(more[8].view, 0);
+  EXPECT_EQ(more[8].id, "b-turned.png");
+  EXPECT_NE(more[7].patches.grey[0], more[6].patches.grey[0]);
 }
 
 TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
@@ -162,7 +179,7 @@ TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
   test::TempDir dir;
   fs::create_directories(dir / "photos");
   test::writeFile(dir / "photos" / "x.png", "not really an image");  // no landmark file
-  test::writeFile(dir / "m.json", R"({"procedural": [{"seeds": "1"}],
+  test::writeFile(dir / "m.json", R"({"version": 1, "procedural": [{"seeds": "1"}],
                                      "photos": [{"folder": "photos"}]})");
   try {
     loadTrainingPhotos(loadManifest(dir / "m.json"));
@@ -179,7 +196,7 @@ TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
     EXPECT_NE(std::string(e.what()).find("x.pts"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("has 3 points"), std::string::npos) << e.what();
   }
-  test::writeFile(dir / "m2.json", R"({"procedural": [{"seeds": "1"}],
+  test::writeFile(dir / "m2.json", R"({"version": 1, "procedural": [{"seeds": "1"}],
                                       "photos": [{"folder": "photos", "list": "l.txt"}]})");
   EXPECT_THROW(loadManifest(dir / "m2.json"), InputError);
 }
