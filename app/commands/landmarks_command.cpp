@@ -6,6 +6,7 @@
 
 #include "app/commands/commands.hpp"
 #include "core/common/error.hpp"
+#include "core/eval/point_set_error.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 
@@ -68,6 +69,7 @@ struct ConvertOptions {
   std::string out;
   std::string from;
   std::string to;
+  std::string keep;
 };
 
 void runConvert(const ConvertOptions& options) {
@@ -82,7 +84,18 @@ void runConvert(const ConvertOptions& options) {
   const auto& from = *read.scheme;
   const auto& points = read.points;
   const auto to = options.to.empty() ? from : Scheme::byNameOrPath(options.to);
-  const auto converted = convertScheme(points, from, to, in);
+  auto converted = convertScheme(points, from, to, in);
+  if (!options.keep.empty()) {
+    std::vector<int> kept;
+    try {
+      kept = parsePointList(options.keep, to);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("--keep: ") + e.what());
+    }
+    for (int i = 0; i < converted.size(); ++i) {
+      if (std::find(kept.begin(), kept.end(), i) == kept.end()) converted.setMissing(i);
+    }
+  }
   writeLandmarks(out, converted, to);
   std::cout << "wrote " << out.string() << ": " << converted.size() << " points ("
             << converted.presentCount() << " present, " << converted.dims() << "D), scheme "
@@ -131,6 +144,9 @@ void addLandmarksCommand(CLI::App& root) {
   convert->add_option("--from", convertOptions->from,
                       "Scheme of the input: ibug68, thesis25 or SCHEME.json "
                       "(default: from the point count, 68 = ibug68, 25 = thesis25)");
+  convert->add_option("--keep", convertOptions->keep,
+                      "Keep only these points of the output scheme (1-based list such as "
+                      "8,11,12,15,16 or 1-18,22), the others missing: e.g. a 5-point start");
   convert->add_option("--to", convertOptions->to,
                       "Scheme of the output: thesis25, ibug68 or SCHEME.json (default: as --from)");
   convert->callback([convertOptions] { runConvert(*convertOptions); });

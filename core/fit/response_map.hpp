@@ -24,7 +24,8 @@ void sampleRegion(const cv::Mat& image, const Eigen::Vector2d& centre, double an
 
 // The expert's score w . normalisePatch(x) for every patchSize window of `region` (a square of
 // patchSize + 2r pixels): a (2r+1)^2 CV_32F map whose pixel (r + dx, r + dy) scores the patch
-// displaced by (dx, dy) from the region's centre. `weights` must be zero-mean.
+// displaced by (dx, dy) from the region's centre. The region must be continuous (sampleRegion's
+// output is).
 void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSize, cv::Mat& scores);
 
 // The logistic responses of expertScores, in (0, 1).

@@ -73,7 +73,12 @@ class Reader {
   void readInto(Scalar* destination, std::size_t count) {
     using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
     require(count * sizeof(Scalar));
-    for (std::size_t i = 0; i < count; ++i) destination[i] = std::bit_cast<Scalar>(read<Bits>());
+    if constexpr (std::endian::native == std::endian::little) {  // the file's order: one copy
+      std::memcpy(destination, bytes_.data() + position_, count * sizeof(Scalar));
+      position_ += count * sizeof(Scalar);
+    } else {
+      for (std::size_t i = 0; i < count; ++i) destination[i] = std::bit_cast<Scalar>(read<Bits>());
+    }
   }
 
  private:

@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# The real-faces comparison of docs/real-faces.md, in one run: clm3d (rlms and fastncc on the model
+# of resources/datasets/real.json) and dlib's 68-point predictor on the LFPW test photos, from each
+# one's own detector and from the truth; 20 photo sequences made from LFPW test photos; franck.mp4.
+#
+# Usage: scripts/real-faces.sh [OUT]   (default real-faces-out; reruns skip what exists)
+# Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
+# PEER_DLIB (the peer_dlib binary of ../shared/tools/peer-dlib; built into OUT when absent),
+# SCORE (../shared/tools/score_68.py), SEQUENCES (20), FRAMES (120).
+# The model trained here inherits LFPW's research-only terms: it is written to OUT, never committed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+OUT=${1:-real-faces-out}
+CLM3D=${CLM3D:-$PWD/build/release/bin/clm3d}
+DATA=${CLM3D_DATA:-$PWD/../shared/data}
+TOOLS=$(dirname "$DATA")/tools
+SCORE=${SCORE:-$TOOLS/score_68.py}
+SEQUENCES=${SEQUENCES:-20}
+FRAMES=${FRAMES:-120}
+TEST=$DATA/photos/lfpw/test
+mkdir -p "$OUT"/{starts,fits,peer,sequences,tracks,logs}
+[[ -d $TEST ]] || { echo "real-faces: no LFPW test photos in $TEST" >&2; exit 1; }
+
+# 1. The model: both scans, MakeHuman, ICT, procedural heads and the 805 LFPW training photos.
+MODEL=$OUT/real.clm3d
+if [[ ! -f $MODEL ]]; then
+  /usr/bin/time -f "train: %e s wall, %M KB peak" "$CLM3D" train --dataset resources/datasets/real.json \
+    --out "$MODEL" --texture-max-modes 16 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
+fi
+
+# 2. Starts from the truth: the 5-point start (eye centres, nose tip, mouth corners).
+for pts in "$TEST"/*.pts; do
+  stem=$(basename "${pts%.pts}")
+  [[ -f $OUT/starts/$stem.pts ]] ||
+    "$CLM3D" landmarks convert --in "$pts" --out "$OUT/starts/$stem.pts" --to thesis25 \
+      --keep 8,11,12,15,16 >/dev/null
+done
+
+# 3. clm3d on the LFPW test photos.
+for optimiser in rlms fastncc; do
+  for start in detector start5; do
+    dir=$OUT/fits/$optimiser-$start
+    [[ -f $dir/summary.csv ]] && continue
+    init=(); [[ $start == start5 ]] && init=(--init-dir "$OUT/starts")
+    "$CLM3D" fit --model "$MODEL" --images "$TEST" --out-dir "$dir" --optimiser "$optimiser" \
+      "${init[@]}" --quiet > "$OUT/logs/fit-$optimiser-$start.log"
+  done
+done
+# Wrong fits on purpose (starts half an eye distance off) for the confidence's ROC.
+for optimiser in rlms fastncc; do
+  dir=$OUT/fits/$optimiser-offset
+  [[ -f $dir/summary.csv ]] ||
+    "$CLM3D" fit --model "$MODEL" --images "$TEST" --out-dir "$dir" --optimiser "$optimiser" \
+      --init-dir "$OUT/starts" --start-offset 0.5 --quiet > "$OUT/logs/fit-$optimiser-offset.log"
+done
+
+# 4. dlib: its own detector, and a box from the truth.
+PEER_DLIB=${PEER_DLIB:-$OUT/peer-build/peer_dlib}
+if [[ ! -x $PEER_DLIB ]]; then
+  cmake -S "$TOOLS/peer-dlib" -B "$OUT/peer-build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$OUT/peer-build" -j2 >/dev/null
+fi
+[[ -d $OUT/peer/detector ]] || "$PEER_DLIB" "$TEST"/*.jpg --out "$OUT/peer/detector" > "$OUT/logs/dlib-detector.log"
+[[ -d $OUT/peer/truth-box ]] ||
+  "$PEER_DLIB" "$TEST"/*.jpg --out "$OUT/peer/truth-box" --box-from-truth "$TEST" > "$OUT/logs/dlib-box.log"
+
+echo "== LFPW test, 224 photos (score_68.py: 19 comparable points, eye-centre normalised)"
+for run in fits/rlms-detector fits/rlms-start5 fits/fastncc-detector fits/fastncc-start5; do
+  printf '%-22s ' "clm3d ${run#fits/}"
+  python3 "$SCORE" --truth "$TEST" --pred "$OUT/$run" --pred-scheme 25 | grep -E "^all "
+done
+for run in peer/detector peer/truth-box; do
+  printf '%-22s ' "dlib ${run#peer/}"
+  python3 "$SCORE" --truth "$TEST" --pred "$OUT/$run" | grep -E "^all "
+done
+echo "== clm3d by landmark (rlms from its detector)"
+python3 "$SCORE" --truth "$TEST" --pred "$OUT/fits/rlms-detector" --pred-scheme 25 --per-point | tail -19
+echo "== confidence ROC (right: start5, wrong: start offset by 0.5 eye distance)"
+for optimiser in rlms fastncc; do
+  echo "-- $optimiser"
+  "$CLM3D" eval-points --truth-dir "$TEST" --pred-dir "$OUT/fits/$optimiser-start5" \
+    --pred-dir "$OUT/fits/$optimiser-offset" --points 1-18,22 --roc | grep -E "ROC|accepting"
+done
+
+# 5. Photo sequences: the first SEQUENCES test photos moving smoothly, tracked with rlms.
+echo "== $SEQUENCES photo sequences of $FRAMES frames"
+n=0
+for img in "$TEST"/*.jpg; do
+  (( n++ < SEQUENCES )) || break
+  stem=$(basename "${img%.jpg}")
+  seq=$OUT/sequences/$stem
+  [[ -f $seq/truth.csv ]] ||
+    "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --frames "$FRAMES" --seed "$n" \
+      --out "$seq" > /dev/null 2>&1
+  [[ -f $OUT/tracks/$stem.csv ]] ||
+    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" \
+      --optimiser rlms --quiet > "$OUT/logs/track-$stem.log" 2>&1
+done
+for tracks in "$OUT"/tracks/image_*.csv; do
+  stem=$(basename "${tracks%.csv}")
+  "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" --json \
+    > "$OUT/tracks/$stem.eval.json" 2>/dev/null || true
+done
+
+# 6. franck.mp4: clm3d's track against dlib on every frame (no truth).
+FRANCK=$DATA/videos/franck.mp4
+if [[ -f $FRANCK && ! -f $OUT/tracks/franck.csv ]]; then
+  "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" --optimiser rlms \
+    --quiet > "$OUT/logs/track-franck.log" 2>&1 || true
+fi
+echo "real-faces: results in $OUT"
