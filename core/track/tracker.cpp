@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
@@ -25,6 +26,19 @@ const char* toString(TrackFailure failure) {
       return "face left the image";
   }
   return "unknown";
+}
+
+std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose) {
+  const int n = model.shape.pointCount();
+  std::vector<Visibility> visibility(static_cast<std::size_t>(n), Visibility::Unknown);
+  const int nearest = model.nearestView(degrees(pose.pitch), degrees(pose.yaw));
+  if (nearest < 0 || std::cmp_greater_equal(nearest, model.views.size())) return visibility;
+  const ViewModel& view = model.views[static_cast<std::size_t>(nearest)];
+  for (int i = 0; i < n && std::cmp_less(i, view.visible.size()); ++i) {
+    visibility[static_cast<std::size_t>(i)] =
+        view.visible[static_cast<std::size_t>(i)] ? Visibility::Visible : Visibility::Hidden;
+  }
+  return visibility;
 }
 
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
@@ -191,6 +205,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.view = step.fit->view;
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;
+    step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
   }
   return step;
 }

@@ -40,6 +40,12 @@ struct TrackerSettings {
   double viewSearchMargin = 0.02;
 };
 
+// Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest
+// the pose's (pitch, yaw) holds it (ViewModel::visible: the landmark passed the depth test in at
+// least half of that view's training renders). The nearest view, not the fit's selected one (which
+// lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
+std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
+
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
 const char* toString(TrackFailure failure);

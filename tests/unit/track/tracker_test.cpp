@@ -1,10 +1,13 @@
 // Tests of the tracker: following a held-out procedural head through a short synthetic rotation
 // from the previous frame, marking a frame without a face as failed and recovering by detection,
-// and drawing the overlay (patches and landmarks) of thesis figure 5.5.
+// the landmarks' visibility in each row, and drawing the overlay (patches and landmarks) of thesis
+// figure 5.5.
 #include "core/track/tracker.hpp"
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/detect/initialisation.hpp"
@@ -135,6 +138,54 @@ TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {
   ASSERT_TRUE(found.fit.has_value());
   EXPECT_TRUE(found.row.success) << toString(found.failure);
   EXPECT_LT(test::meanPointError(found.row.points, scene.truthPoints), 0.1 * scene.interOcular);
+}
+
+// Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
+// view's visibility. Compared with the depth-tested truth of the renders over a turn to 40 degrees
+// (measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found).
+TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
+  SequenceSettings turn = shortSequence(40.0);
+  turn.stepDeg = 4.0;
+  SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), turn);
+  Tracker tracker(model, sequence.camera());
+  int agree = 0;
+  int total = 0;
+  int hiddenTruth = 0;
+  int hiddenFound = 0;
+  for (int i = 0; i < sequence.frameCount(); ++i) {
+    const SequenceFrame frame = sequence.render(i);
+    if (i == 0) {
+      tracker.setState(
+          stateFromPoints(model, sequence.camera(), frame.points, std::vector<bool>(25, true)));
+    }
+    const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
+    ASSERT_TRUE(step.fit.has_value()) << "frame " << i;
+    ASSERT_EQ(step.row.visibility.size(), 25u);
+    EXPECT_EQ(step.row.visibility, landmarkVisibility(model, step.fit->state.pose));
+    for (std::size_t k = 0; k < 25; ++k) {
+      ASSERT_NE(step.row.visibility[k], Visibility::Unknown);
+      const bool visible = step.row.visibility[k] == Visibility::Visible;
+      agree += visible == frame.visible[k] ? 1 : 0;
+      hiddenTruth += frame.visible[k] ? 0 : 1;
+      hiddenFound += !frame.visible[k] && !visible ? 1 : 0;
+      ++total;
+    }
+  }
+  std::cout << "[ visibility agrees with the renders' depth test for " << agree << " of " << total
+            << " landmark-frames; " << hiddenFound << " of " << hiddenTruth
+            << " hidden ones found ]\n";
+  EXPECT_GT(agree, 0.9 * total);
+
+  // The nearest view decides, whatever view the fit used.
+  Pose pose = Pose::fromDegrees(0.0, 40.0, 0.0, {0.0, 0.0, -600.0});
+  const int nearest = model.nearestView(0.0, 40.0);
+  const auto visibility = landmarkVisibility(model, pose);
+  for (std::size_t k = 0; k < 25; ++k) {
+    EXPECT_EQ(visibility[k] == Visibility::Visible,
+              model.views[static_cast<std::size_t>(nearest)].visible[k]);
+  }
 }
 
 TEST(FitOverlay, DrawsPatchesLandmarksAndLabel) {
