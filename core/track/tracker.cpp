@@ -42,7 +42,20 @@ std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& po
 }
 
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
-    : model_(&model), camera_(camera), settings_(settings), fitter_(model, camera, settings.fit) {}
+    : model_(&model),
+      camera_(camera),
+      settings_(settings),
+      fitter_(model, camera, settings.fit),
+      usesExperts_(
+          makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()) {}
+
+double Tracker::minConfidence() const {
+  return usesExperts_ ? settings_.minExpertConfidence : settings_.minConfidence;
+}
+
+double Tracker::viewSearchConfidence() const {
+  return usesExperts_ ? settings_.viewSearchExpertConfidence : settings_.viewSearchConfidence;
+}
 
 Tracker::~Tracker() = default;
 
@@ -142,7 +155,7 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   if (std::sqrt(mahalanobis) > settings_.maxShapeRms * std::sqrt(std::max(1, shape.modeCount()))) {
     return TrackFailure::ImplausibleShape;
   }
-  if (fit.confidence < settings_.minConfidence) return TrackFailure::LowConfidence;
+  if (fit.confidence < minConfidence()) return TrackFailure::LowConfidence;
   return TrackFailure::None;
 }
 
@@ -173,7 +186,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     // A prediction that overshoots (the head stopped or turned back) gets a second try from
     // where the face last was, before falling back to the detector.
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
-    if (step.fit && step.fit->confidence < settings_.viewSearchConfidence) {
+    if (step.fit && step.fit->confidence < viewSearchConfidence()) {
       searchNeighbouringViews(step, attempt);
     }
   }

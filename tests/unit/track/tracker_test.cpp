@@ -140,6 +140,79 @@ TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {
   EXPECT_LT(test::meanPointError(found.row.points, scene.truthPoints), 0.1 * scene.interOcular);
 }
 
+// rlms tracking judges the experts' confidence on its own scale: the frames of a turning head are
+// tracked; a frame of uniform noise, one of blurred noise and a blank frame, each after a tracked
+// frame, fail (the experts disagree), and the face is found again after each. Measured: the face
+// frames 0.41-0.55, uniform noise 0.23, blurred noise 0.20, the blank frame 0.02 (docs/tracking.md
+// has the wider measurement; noise is the fragile case, see TrackerSettings::minExpertConfidence).
+TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
+  SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), shortSequence(20.0));
+  TrackerSettings settings;
+  settings.fit.optimiser = "rlms";
+  settings.minConfidence = 0.9;  // an NCC threshold every rlms frame would fail: it must not apply
+  Tracker tracker(model, sequence.camera(), settings);
+  ASSERT_TRUE(tracker.usesExperts());
+  EXPECT_EQ(tracker.minConfidence(), settings.minExpertConfidence);
+  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchExpertConfidence);
+
+  // Each non-face frame follows a tracked face frame, so each is searched from a good track.
+  const int noiseFrame = 3;
+  const int blurredFrame = 5;
+  const int blankFrame = 7;
+  cv::RNG rng(12);
+  double lowestFace = 1.0;
+  double highestNonFace = 0.0;
+  for (int i = 0; i < sequence.frameCount(); ++i) {
+    SequenceFrame frame = sequence.render(i);
+    if (i == 0) {
+      Eigen::Matrix2Xd start = frame.points;
+      start.row(0).array() += 3.0;
+      tracker.setState(
+          stateFromPoints(model, sequence.camera(), start, std::vector<bool>(25, true)));
+    }
+    const bool face = i != noiseFrame && i != blurredFrame && i != blankFrame;
+    if (i == noiseFrame) {
+      rng.fill(frame.bgr, cv::RNG::UNIFORM, 0, 256);
+    } else if (i == blurredFrame) {
+      rng.fill(frame.bgr, cv::RNG::UNIFORM, 0, 256);
+      cv::GaussianBlur(frame.bgr, frame.bgr, cv::Size(0, 0), 3.0);
+      cv::normalize(frame.bgr, frame.bgr, 0, 255, cv::NORM_MINMAX);
+    } else if (i == blankFrame) {
+      frame.bgr.setTo(cv::Scalar::all(128));
+    }
+    const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
+    const double confidence = step.fit ? step.fit->confidence : 0.0;
+    std::cout << "[ rlms frame " << i << (face ? " face" : " non-face") << ": confidence "
+              << confidence << ", " << toString(step.failure) << (step.detected ? ", detected" : "")
+              << " ]\n";
+    if (face) {
+      ASSERT_TRUE(step.fit.has_value()) << "frame " << i;
+      EXPECT_TRUE(step.row.success) << "frame " << i << ": " << toString(step.failure);
+      EXPECT_LT(frameError(step.row.points, frame.points), 0.1) << "frame " << i;
+      lowestFace = std::min(lowestFace, confidence);
+    } else {
+      EXPECT_FALSE(step.row.success) << "frame " << i;
+      EXPECT_NE(step.failure, TrackFailure::None) << "frame " << i;
+      highestNonFace = std::max(highestNonFace, confidence);
+    }
+  }
+  std::cout << "[ rlms confidence: lowest on the face " << lowestFace << ", highest on a non-face "
+            << highestNonFace << " ]\n";
+}
+
+// The same non-face frame tracked with a template optimiser is judged on the NCC scale.
+TEST(Tracker, TemplateOptimisersKeepTheNccThresholds) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
+  TrackerSettings settings;
+  const Tracker tracker(model, scene.camera, settings);
+  EXPECT_FALSE(tracker.usesExperts());
+  EXPECT_EQ(tracker.minConfidence(), settings.minConfidence);
+  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchConfidence);
+}
+
 // Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
 // view's visibility. Compared with the depth-tested truth of the renders over a turn to 40 degrees
 // (measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found).
