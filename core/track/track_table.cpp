@@ -314,8 +314,9 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
   // Visibility: visible_1..visible_n, all or none (a table from before them has none: unknown).
   std::vector<int> visibleColumns;
   bool anyVisible = false;
-  for (int i = 1; i <= n; ++i)
-    anyVisible = anyVisible || find(kVisiblePrefix + std::to_string(i)) >= 0;
+  for (int i = 1; i <= n && !anyVisible; ++i) {
+    anyVisible = find(kVisiblePrefix + std::to_string(i)) >= 0;
+  }
   if (anyVisible) {
     for (int i = 0; i < n; ++i) {
       visibleColumns.push_back(require(kVisiblePrefix + std::to_string(i + 1)));
