@@ -37,8 +37,10 @@ struct TrackArgs {
   fs::path model, video, out, overlay, init;
   FitOptions fit;
   double minConfidence = TrackerSettings{}.minConfidence;
+  double minExpertConfidence = TrackerSettings{}.minExpertConfidence;
   double motionPrediction = TrackerSettings{}.motionPrediction;
   double viewSearch = TrackerSettings{}.viewSearchConfidence;
+  double viewSearchExpert = TrackerSettings{}.viewSearchExpertConfidence;
   bool quiet = false;
 };
 
@@ -49,8 +51,10 @@ void runTrack(const TrackArgs& args) {
   settings.fit = args.fit.settings();
   settings.detector = args.fit.detectorKind();
   settings.minConfidence = args.minConfidence;
+  settings.minExpertConfidence = args.minExpertConfidence;
   settings.motionPrediction = args.motionPrediction;
   settings.viewSearchConfidence = args.viewSearch;
+  settings.viewSearchExpertConfidence = args.viewSearchExpert;
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
@@ -131,8 +135,15 @@ void addTrackCommand(CLI::App& root) {
   command->add_option("--init", args->init, "start the first frame from these points");
   command
       ->add_option("--min-confidence", args->minConfidence,
-                   "mean NCC below which a frame counts as failed and the face is re-detected")
+                   "mean NCC below which a frame counts as failed and the face is re-detected "
+                   "(template optimisers)")
       ->capture_default_str();
+  command
+      ->add_option("--min-expert-confidence", args->minExpertConfidence,
+                   "the same for rlms: the patch experts' mean response (0..1) below which a "
+                   "frame counts as failed")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   command
       ->add_option("--motion-prediction", args->motionPrediction,
                    "share of the last frame-to-frame pose change each frame's start is moved on "
@@ -142,7 +153,13 @@ void addTrackCommand(CLI::App& root) {
   command
       ->add_option("--view-search", args->viewSearch,
                    "mean NCC below which a frame is also searched from the neighbouring views "
-                   "(0 = never)")
+                   "(0 = never; template optimisers)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--view-search-expert", args->viewSearchExpert,
+                   "the same for rlms: the patch experts' mean response (0..1) below which a frame "
+                   "is also searched from the neighbouring views (0 = never)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");

@@ -46,6 +46,7 @@ void markAsReference(TrackRow& row) {
   row.confidence = 1.0;
   row.view = -1;
   row.pose.reset();
+  row.visibility.clear();  // the fit's visibility does not describe a person's points
 }
 
 // Seconds of frame `frame` from the first and last rows with finite timestamps; NaN without two.

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
+#include <utility>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
@@ -16,6 +17,7 @@
 namespace clm3d {
 namespace {
 
+constexpr const char* kVisiblePrefix = "visible_";
 constexpr std::array<const char*, 7> kPoseColumns = {"tx",    "ty",  "tz",  "scale",
                                                      "pitch", "yaw", "roll"};
 
@@ -78,6 +80,13 @@ class RowReader {
     return value;
   }
 
+  // 1/0 (or true/false); an empty cell or "nan" is unknown.
+  Visibility visibility(int column) const {
+    const auto text = cell(column);
+    if (text.empty() || text == "nan" || text == "NaN") return Visibility::Unknown;
+    return flag(column) ? Visibility::Visible : Visibility::Hidden;
+  }
+
   bool flag(int column) const {
     const auto text = cell(column);
     if (text == "1" || text == "true" || text == "True" || text == "TRUE") return true;
@@ -106,14 +115,20 @@ bool isTrackerColumn(const std::string& name, int landmarkCount) {
   for (const char* pose : kPoseColumns) {
     if (name == pose) return true;
   }
-  // x_i / y_i with i in 1..landmarkCount, written without sign or leading zero.
-  if (name.size() < 3 || (name[0] != 'x' && name[0] != 'y') || name[1] != '_' || name[2] == '0') {
+  // x_i / y_i / visible_i with i in 1..landmarkCount, written without sign or leading zero.
+  std::string_view index = name;
+  if (index.starts_with("x_") || index.starts_with("y_")) {
+    index.remove_prefix(2);
+  } else if (index.starts_with(kVisiblePrefix)) {
+    index.remove_prefix(std::string_view(kVisiblePrefix).size());
+  } else {
     return false;
   }
-  int index = 0;
-  const auto* end = name.data() + name.size();
-  const auto [ptr, ec] = std::from_chars(name.data() + 2, end, index);
-  return ec == std::errc() && ptr == end && index >= 1 && index <= landmarkCount;
+  if (index.empty() || index.front() == '0') return false;
+  int value = 0;
+  const auto* end = index.data() + index.size();
+  const auto [ptr, ec] = std::from_chars(index.data(), end, value);
+  return ec == std::errc() && ptr == end && value >= 1 && value <= landmarkCount;
 }
 
 void checkExtraColumns(const TrackTable& table) {
@@ -147,6 +162,12 @@ std::string formatTrackTable(const TrackTable& table) {
   for (const char* name : kPoseColumns) out += std::string(",") + name;
   for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
   for (int i = 1; i <= n; ++i) out += ",y_" + std::to_string(i);
+  const bool withVisibility =
+      std::any_of(table.rows.begin(), table.rows.end(),
+                  [](const TrackRow& row) { return !row.visibility.empty(); });
+  if (withVisibility) {
+    for (int i = 1; i <= n; ++i) out += "," + std::string(kVisiblePrefix) + std::to_string(i);
+  }
   checkExtraColumns(table);
   for (const auto& name : table.extraColumns) out += ',' + name;
   out += '\n';
@@ -155,6 +176,11 @@ std::string formatTrackTable(const TrackTable& table) {
     if (row.points.cols() != n) {
       throw Error("track table: frame " + std::to_string(row.frame) + " has " +
                   std::to_string(row.points.cols()) + " points, expected " + std::to_string(n));
+    }
+    if (!row.visibility.empty() && std::cmp_not_equal(row.visibility.size(), n)) {
+      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                  std::to_string(row.visibility.size()) + " visibility flags, expected " +
+                  std::to_string(n));
     }
     out += std::to_string(row.frame);
     out += ',';
@@ -183,6 +209,14 @@ std::string formatTrackTable(const TrackTable& table) {
       for (int i = 0; i < n; ++i) {
         out += ',';
         if (present(i)) appendFixed(out, row.points(axis, i), 4);
+      }
+    }
+    if (withVisibility) {
+      for (int i = 0; i < n; ++i) {
+        const Visibility flag = row.visibility.empty()
+                                    ? Visibility::Unknown
+                                    : row.visibility[static_cast<std::size_t>(i)];
+        out += flag == Visibility::Visible ? ",1" : flag == Visibility::Hidden ? ",0" : ",";
       }
     }
     if (row.extraCells.size() > table.extraColumns.size()) {
@@ -277,6 +311,17 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
     xColumns[static_cast<std::size_t>(i)] = require("x_" + std::to_string(i + 1));
     yColumns[static_cast<std::size_t>(i)] = require("y_" + std::to_string(i + 1));
   }
+  // Visibility: visible_1..visible_n, all or none (a table from before them has none: unknown).
+  std::vector<int> visibleColumns;
+  bool anyVisible = false;
+  for (int i = 1; i <= n && !anyVisible; ++i) {
+    anyVisible = find(kVisiblePrefix + std::to_string(i)) >= 0;
+  }
+  if (anyVisible) {
+    for (int i = 0; i < n; ++i) {
+      visibleColumns.push_back(require(kVisiblePrefix + std::to_string(i + 1)));
+    }
+  }
 
   TrackTable table;
   table.landmarkCount = n;
@@ -354,6 +399,7 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
       row.points(0, i) = x;
       row.points(1, i) = y;
     }
+    for (const int column : visibleColumns) row.visibility.push_back(reader.visibility(column));
     for (const int column : extraColumns) row.extraCells.emplace_back(reader.cell(column));
     table.rows.push_back(std::move(row));
   }

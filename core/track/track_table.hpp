@@ -1,7 +1,7 @@
 // The tracker's per-frame output as a table: one row per frame with its time, success,
-// confidence, selected view, head pose and the 2D landmarks. `clm3d track` writes it, `clm3d synth`
-// writes ground truth in the same columns, `clm3d eval` and the studio read both. CSV so that
-// spreadsheets, pandas and R read it directly (columns: docs/tracks-csv.md).
+// confidence, selected view, head pose, the 2D landmarks and whether each is visible. `clm3d track`
+// writes it, `clm3d synth` writes ground truth in the same columns, `clm3d eval` and the studio
+// read both. CSV so that spreadsheets, pandas and R read it directly (columns: docs/tracks-csv.md).
 #pragma once
 
 #include <Eigen/Core>
@@ -14,16 +14,24 @@
 
 namespace clm3d {
 
+// Whether a landmark is visible from the fitted pose (rule: docs/tracks-csv.md, visible_k).
+enum class Visibility : signed char { Unknown = -1, Hidden = 0, Visible = 1 };
+
 struct TrackRow {
-  int frame = 0;             // 0-based frame index in the video
-  double timestamp = 0.0;    // seconds from the start of the video
-  bool success = false;      // the tracker believes the landmarks are on the face
-  double confidence = 0.0;   // mean NCC of the landmarks' patches in [-1, 1]; 1 for ground truth
+  int frame = 0;           // 0-based frame index in the video
+  double timestamp = 0.0;  // seconds from the start of the video
+  bool success = false;    // the tracker believes the landmarks are on the face
+  // Template optimisers: mean NCC of the landmarks' patches in [-1, 1]; rlms: the patch experts'
+  // mean response in (0, 1); 1 for ground truth.
+  double confidence = 0.0;
   int view = -1;             // index of the model view used; -1 if none
   std::optional<Pose> pose;  // absent when the frame has no fit
   // 2 x n pixels (OpenCV convention, 0-based, pixel centres at integers); a NaN column is a
   // landmark without a position (written as empty cells).
   Eigen::Matrix2Xd points;
+  // Per landmark (n entries), or empty: unknown for every landmark (no fit, a reference frame, or
+  // a table without visible_k columns).
+  std::vector<Visibility> visibility{};
   // One text cell per TrackTable::extraColumns entry (fewer: the rest are empty).
   std::vector<std::string> extraCells{};
 };
@@ -37,15 +45,18 @@ struct TrackTable {
 };
 
 // Columns, in order: frame, timestamp, success (0/1), confidence, view, tx, ty, tz, scale,
-// pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n, then the extra columns. Missing values are empty
+// pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n, visible_1..visible_n (1, 0, or empty for
+// unknown; only when some row has a visibility), then the extra columns. Missing values are empty
 // cells. Written atomically (temporary file, then rename). Throws Error if a row's point count is
-// not landmarkCount, a row has more extra cells than there are extra columns, or an extra column's
-// name or cell is empty (names only), holds a comma, quote or line break, or repeats a column.
+// not landmarkCount, a row's visibility is neither empty nor landmarkCount long, a row has more
+// extra cells than there are extra columns, or an extra column's name or cell is empty (names
+// only), holds a comma, quote or line break, or repeats a column.
 void writeTrackTable(const std::filesystem::path& path, const TrackTable& table);
 std::string formatTrackTable(const TrackTable& table);
 
 // Reads a table written by writeTrackTable (or by another tool with the same header; column order
-// is taken from the header). Throws InputError naming the file, the
+// is taken from the header; without visible_k columns every row's visibility is empty, with them
+// every row's has n entries). Throws InputError naming the file, the
 // line and the column for a missing column, a malformed number or a wrong cell count. Columns the
 // table does not use come back as extraColumns (header order, named ones only) with their cells.
 TrackTable readTrackTable(const std::filesystem::path& path);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
@@ -27,8 +28,34 @@ const char* toString(TrackFailure failure) {
   return "unknown";
 }
 
+std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose) {
+  const int n = model.shape.pointCount();
+  std::vector<Visibility> visibility(static_cast<std::size_t>(n), Visibility::Unknown);
+  const int nearest = model.nearestView(degrees(pose.pitch), degrees(pose.yaw));
+  if (nearest < 0 || std::cmp_greater_equal(nearest, model.views.size())) return visibility;
+  const ViewModel& view = model.views[static_cast<std::size_t>(nearest)];
+  for (int i = 0; i < n && std::cmp_less(i, view.visible.size()); ++i) {
+    visibility[static_cast<std::size_t>(i)] =
+        view.visible[static_cast<std::size_t>(i)] ? Visibility::Visible : Visibility::Hidden;
+  }
+  return visibility;
+}
+
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
-    : model_(&model), camera_(camera), settings_(settings), fitter_(model, camera, settings.fit) {}
+    : model_(&model),
+      camera_(camera),
+      settings_(settings),
+      fitter_(model, camera, settings.fit),
+      usesExperts_(
+          makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()) {}
+
+double Tracker::minConfidence() const {
+  return usesExperts_ ? settings_.minExpertConfidence : settings_.minConfidence;
+}
+
+double Tracker::viewSearchConfidence() const {
+  return usesExperts_ ? settings_.viewSearchExpertConfidence : settings_.viewSearchConfidence;
+}
 
 Tracker::~Tracker() = default;
 
@@ -128,7 +155,7 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   if (std::sqrt(mahalanobis) > settings_.maxShapeRms * std::sqrt(std::max(1, shape.modeCount()))) {
     return TrackFailure::ImplausibleShape;
   }
-  if (fit.confidence < settings_.minConfidence) return TrackFailure::LowConfidence;
+  if (fit.confidence < minConfidence()) return TrackFailure::LowConfidence;
   return TrackFailure::None;
 }
 
@@ -159,7 +186,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     // A prediction that overshoots (the head stopped or turned back) gets a second try from
     // where the face last was, before falling back to the detector.
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
-    if (step.fit && step.fit->confidence < settings_.viewSearchConfidence) {
+    if (step.fit && step.fit->confidence < viewSearchConfidence()) {
       searchNeighbouringViews(step, attempt);
     }
   }
@@ -191,6 +218,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.view = step.fit->view;
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;
+    step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
   }
   return step;
 }

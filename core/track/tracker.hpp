@@ -23,7 +23,21 @@ class VideoReader;
 struct TrackerSettings {
   FitSettings fit;
   DetectorKind detector = DetectorKind::Cascade;
-  double minConfidence = 0.35;  // mean NCC below this marks the frame as failed
+  // A confidence below this marks the frame as failed. Two scales: template optimisers report a
+  // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
+  // a probability that the points are right. The tracker uses the one matching its optimiser.
+  double minConfidence = 0.35;
+  // Measured (tests/unit/track/expert_confidence_measure_test.cpp: a held-out procedural head
+  // turning 0 -> -60 -> +60 -> 0 degrees, and non-face frames searched from each frame's start as
+  // a track would, neighbouring views included): with the test fixture's model, good fits scored
+  // 0.33-0.90 (0-1.3% below 0.35), uniform noise 0.14-0.45 (78-93% below 0.35), blurred noise
+  // 0.12-0.50 (73-100%), blank frames 0.01-0.13 (all); with a model trained on 805 photos
+  // (real16), good fits 0.52-0.67, drifting fits at |yaw| >= 45 (error 0.1-0.2) 0.46-0.55, but
+  // uniform noise 0.34-0.62 and blurred noise 0.36-0.61 (1% and 0% below 0.35), blank 0.07-0.19.
+  // The experts' scale depends on the model: 0.35 keeps the good fits of both and rejects blank
+  // frames, and most noise for the small model; a model like real16 needs about 0.45 (all its
+  // good fits kept, 69% of uniform noise rejected), set with `clm3d track --min-expert-confidence`.
+  double minExpertConfidence = 0.35;
   // Root mean square of b_k / SD_k beyond which the shape is implausible: a real face sits near 1;
   // with every mode clamped to +-3 SD, 2.5 means most modes are pressed against their limits.
   double maxShapeRms = 2.5;
@@ -37,8 +51,18 @@ struct TrackerSettings {
   // margin: a head turning past a view's range is caught by the next view before it is lost.
   // 0 switches the search off.
   double viewSearchConfidence = 0.7;
-  double viewSearchMargin = 0.02;
+  // The same for rlms, on the experts' scale: real16's good fits scored a median 0.60 (5th
+  // percentile 0.535) and its frames near view boundaries or past +-45 degrees 0.46-0.55 (same
+  // measurement as above), so 0.55 searches those. A higher value only costs time.
+  double viewSearchExpertConfidence = 0.55;
+  double viewSearchMargin = 0.02;  // on either scale
 };
+
+// Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest
+// the pose's (pitch, yaw) holds it (ViewModel::visible: the landmark passed the depth test in at
+// least half of that view's training renders). The nearest view, not the fit's selected one (which
+// lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
+std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
 
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
@@ -69,6 +93,11 @@ class Tracker {
 
   Fitter& fitter() { return fitter_; }
   const TrackerSettings& settings() const { return settings_; }
+  // True when the fitter's optimiser matches patch experts (rlms): its confidences are the
+  // experts' mean response and the expert thresholds apply.
+  bool usesExperts() const { return usesExperts_; }
+  double minConfidence() const;
+  double viewSearchConfidence() const;
 
  private:
   TrackFailure judge(const FitResult& fit) const;
@@ -80,6 +109,7 @@ class Tracker {
   Camera camera_;
   TrackerSettings settings_;
   Fitter fitter_;
+  bool usesExperts_ = false;
   std::unique_ptr<FaceDetector> detector_;
   std::optional<FitState> state_;
   std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction

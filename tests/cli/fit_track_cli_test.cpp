@@ -4,6 +4,7 @@
 // model of another scheme, an image without a face), which must exit 1 naming the problem.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/core.hpp>
 
 #include "core/eval/synthetic_sequence.hpp"
@@ -141,10 +142,28 @@ TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
   EXPECT_NE(result.output.find("fit time per frame: median"), std::string::npos) << result.output;
   const TrackTable table = readTrackTable(tracks);
   ASSERT_EQ(table.rows.size(), 6u);
-  for (const TrackRow& row : table.rows) EXPECT_TRUE(row.success) << "frame " << row.frame;
+  for (const TrackRow& row : table.rows) {
+    EXPECT_TRUE(row.success) << "frame " << row.frame;
+    ASSERT_EQ(row.visibility.size(), 25u) << "frame " << row.frame;  // visible_1..visible_25
+    EXPECT_EQ(std::count(row.visibility.begin(), row.visibility.end(), Visibility::Unknown), 0);
+  }
   EXPECT_TRUE(std::filesystem::exists(overlay));
   const auto eval = runClm3d("eval --truth " + files.truth.string() + " --pred " + tracks);
   ASSERT_EQ(eval.exitCode, 0) << eval.output;
+
+  // rlms is judged on the experts' scale: tracked with the default threshold, every frame failed
+  // with an impossible one (the NCC threshold does not apply to it).
+  const auto rlms = [&](const std::string& options) {
+    const auto run =
+        runClm3d("track --quiet --model " + f.model + " --video " + files.video.string() +
+                 " --out " + tracks + " --optimiser rlms " + options);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    int succeeded = 0;
+    for (const TrackRow& row : readTrackTable(tracks).rows) succeeded += row.success ? 1 : 0;
+    return succeeded;
+  };
+  EXPECT_EQ(rlms("--min-confidence 0.99"), 6);
+  EXPECT_EQ(rlms("--min-expert-confidence 0.99"), 0);
 }
 
 TEST(TrackCli, AnUnreadableVideoIsAClearError) {

@@ -110,6 +110,22 @@ TEST(GroundTruth, KeyframesSetAndClear) {
             std::string::npos);
 }
 
+// The tracker's visibility stays with its rows; corrected points have none (it described the fit).
+TEST(GroundTruth, KeyframesDropTheTrackersVisibility) {
+  TrackTable track = sampleTrack();
+  for (auto& row : track.rows) {
+    row.visibility = {Visibility::Visible, Visibility::Hidden, Visibility::Visible};
+  }
+  auto set = GroundTruthSet::fromTrack(track, 5);
+  EXPECT_EQ(set.table.rows[0].visibility, track.rows[0].visibility);
+  EXPECT_TRUE(set.table.rows[2].visibility.empty());  // a frame the track did not have
+  set.setKeyframe(1, points(1, 2, 3, 4, 5, 6));
+  EXPECT_TRUE(set.table.rows[1].visibility.empty());
+  const auto text = formatTrackTable(set.table);
+  EXPECT_NE(text.find(",1,0,1\n"), std::string::npos) << text;      // frame 0
+  EXPECT_NE(text.find(",6.0000,,,\n"), std::string::npos) << text;  // frame 1, now a keyframe
+}
+
 TEST(GroundTruth, FirstKeyframeSetsTheLandmarkCountOfAnEmptySet) {
   auto set = GroundTruthSet::fromTrack(TrackTable{}, 3);
   set.setKeyframe(2, points(1, 2, 3, 4, 5, 6));

@@ -97,6 +97,64 @@ TEST(TrackTable, RoundTripsIncludingMissingValues) {
   EXPECT_EQ(formatTrackTable(back), formatTrackTable(table));
 }
 
+TEST(TrackTable, VisibilityColumnsFollowThePointsAndRoundTrip) {
+  TrackTable table = sampleTable();
+  table.extraColumns = {"note"};
+  table.rows[0].visibility = {Visibility::Visible, Visibility::Hidden, Visibility::Unknown};
+  // Row 1 has no fit: its visibility stays empty (unknown), written as empty cells.
+  const auto text = formatTrackTable(table);
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "frame,timestamp,success,confidence,view,tx,ty,tz,scale,pitch,yaw,roll,"
+            "x_1,x_2,x_3,y_1,y_2,y_3,visible_1,visible_2,visible_3,note");
+  EXPECT_NE(text.find(",2048.0001,1,0,,\n"), std::string::npos) << text;
+  EXPECT_NE(text.find(",31.0000,,,,\n"), std::string::npos) << text;
+
+  const auto back = parseTrackTable(text, "t.csv");
+  EXPECT_EQ(back.extraColumns, (std::vector<std::string>{"note"}));
+  ASSERT_EQ(back.rows.size(), 2u);
+  EXPECT_EQ(back.rows[0].visibility, table.rows[0].visibility);
+  EXPECT_EQ(back.rows[1].visibility, std::vector<Visibility>(3, Visibility::Unknown));
+  EXPECT_EQ(formatTrackTable(back), text);
+
+  // Other tools' spellings, in any order.
+  const auto other = parseTrackTable(
+      "frame,success,visible_2,x_1,y_1,x_2,y_2,visible_1\n0,1,true,1,2,3,4,nan\n", "o.csv");
+  EXPECT_EQ(other.rows[0].visibility,
+            (std::vector<Visibility>{Visibility::Unknown, Visibility::Visible}));
+  EXPECT_TRUE(other.extraColumns.empty());
+}
+
+TEST(TrackTable, ATableWithoutVisibilityColumnsLoadsWithVisibilityUnknown) {
+  // A file written before the visible_k columns existed.
+  const auto old = parseTrackTable(
+      "frame,timestamp,success,confidence,view,tx,ty,tz,scale,pitch,yaw,roll,x_1,x_2,y_1,y_2\n"
+      "0,0.000000,1,0.8,1,1,2,-800,1,0,10,0,1.0000,2.0000,3.0000,4.0000\n",
+      "old.csv");
+  ASSERT_EQ(old.rows.size(), 1u);
+  EXPECT_TRUE(old.rows[0].visibility.empty());
+  EXPECT_TRUE(old.extraColumns.empty());
+  // Written again it stays without them: nothing claims a visibility nobody measured.
+  EXPECT_EQ(formatTrackTable(old).find("visible_"), std::string::npos);
+}
+
+TEST(TrackTable, VisibilityColumnsAreAllOrNoneAndFlagsOnly) {
+  const auto message = [](const std::string& text) {
+    try {
+      parseTrackTable(text, "v.csv");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("frame,success,x_1,y_1,x_2,y_2,visible_1\n0,1,1,2,3,4,1\n"),
+            "v.csv:1: missing column visible_2");
+  EXPECT_EQ(message("frame,success,x_1,y_1,visible_1\n0,1,1,2,yes\n"),
+            "v.csv:2: column visible_1: \"yes\" is not 0 or 1");
+  TrackTable table = sampleTable();
+  table.rows[0].visibility = {Visibility::Visible};
+  EXPECT_THROW(formatTrackTable(table), Error);
+}
+
 TEST(TrackTable, HalfMissingPointIsWrittenAsMissing) {
   TrackTable table;
   table.landmarkCount = 1;

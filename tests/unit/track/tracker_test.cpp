@@ -1,10 +1,13 @@
 // Tests of the tracker: following a held-out procedural head through a short synthetic rotation
 // from the previous frame, marking a frame without a face as failed and recovering by detection,
-// and drawing the overlay (patches and landmarks) of thesis figure 5.5.
+// the landmarks' visibility in each row, and drawing the overlay (patches and landmarks) of thesis
+// figure 5.5.
 #include "core/track/tracker.hpp"
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+#include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/detect/initialisation.hpp"
@@ -135,6 +138,127 @@ TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {
   ASSERT_TRUE(found.fit.has_value());
   EXPECT_TRUE(found.row.success) << toString(found.failure);
   EXPECT_LT(test::meanPointError(found.row.points, scene.truthPoints), 0.1 * scene.interOcular);
+}
+
+// rlms tracking judges the experts' confidence on its own scale: the frames of a turning head are
+// tracked; a frame of uniform noise, one of blurred noise and a blank frame, each after a tracked
+// frame, fail (the experts disagree), and the face is found again after each. Measured: the face
+// frames 0.41-0.55, uniform noise 0.23, blurred noise 0.20, the blank frame 0.02 (docs/tracking.md
+// has the wider measurement; noise is the fragile case, see TrackerSettings::minExpertConfidence).
+TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
+  SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), shortSequence(20.0));
+  TrackerSettings settings;
+  settings.fit.optimiser = "rlms";
+  settings.minConfidence = 0.9;  // an NCC threshold every rlms frame would fail: it must not apply
+  Tracker tracker(model, sequence.camera(), settings);
+  ASSERT_TRUE(tracker.usesExperts());
+  EXPECT_EQ(tracker.minConfidence(), settings.minExpertConfidence);
+  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchExpertConfidence);
+
+  // Each non-face frame follows a tracked face frame, so each is searched from a good track.
+  const int noiseFrame = 3;
+  const int blurredFrame = 5;
+  const int blankFrame = 7;
+  cv::RNG rng(12);
+  double lowestFace = 1.0;
+  double highestNonFace = 0.0;
+  for (int i = 0; i < sequence.frameCount(); ++i) {
+    SequenceFrame frame = sequence.render(i);
+    if (i == 0) {
+      Eigen::Matrix2Xd start = frame.points;
+      start.row(0).array() += 3.0;
+      tracker.setState(
+          stateFromPoints(model, sequence.camera(), start, std::vector<bool>(25, true)));
+    }
+    const bool face = i != noiseFrame && i != blurredFrame && i != blankFrame;
+    if (i == noiseFrame) {
+      rng.fill(frame.bgr, cv::RNG::UNIFORM, 0, 256);
+    } else if (i == blurredFrame) {
+      rng.fill(frame.bgr, cv::RNG::UNIFORM, 0, 256);
+      cv::GaussianBlur(frame.bgr, frame.bgr, cv::Size(0, 0), 3.0);
+      cv::normalize(frame.bgr, frame.bgr, 0, 255, cv::NORM_MINMAX);
+    } else if (i == blankFrame) {
+      frame.bgr.setTo(cv::Scalar::all(128));
+    }
+    const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
+    const double confidence = step.fit ? step.fit->confidence : 0.0;
+    std::cout << "[ rlms frame " << i << (face ? " face" : " non-face") << ": confidence "
+              << confidence << ", " << toString(step.failure) << (step.detected ? ", detected" : "")
+              << " ]\n";
+    if (face) {
+      ASSERT_TRUE(step.fit.has_value()) << "frame " << i;
+      EXPECT_TRUE(step.row.success) << "frame " << i << ": " << toString(step.failure);
+      EXPECT_LT(frameError(step.row.points, frame.points), 0.1) << "frame " << i;
+      lowestFace = std::min(lowestFace, confidence);
+    } else {
+      EXPECT_FALSE(step.row.success) << "frame " << i;
+      EXPECT_NE(step.failure, TrackFailure::None) << "frame " << i;
+      highestNonFace = std::max(highestNonFace, confidence);
+    }
+  }
+  std::cout << "[ rlms confidence: lowest on the face " << lowestFace << ", highest on a non-face "
+            << highestNonFace << " ]\n";
+}
+
+// The same non-face frame tracked with a template optimiser is judged on the NCC scale.
+TEST(Tracker, TemplateOptimisersKeepTheNccThresholds) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
+  TrackerSettings settings;
+  const Tracker tracker(model, scene.camera, settings);
+  EXPECT_FALSE(tracker.usesExperts());
+  EXPECT_EQ(tracker.minConfidence(), settings.minConfidence);
+  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchConfidence);
+}
+
+// Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
+// view's visibility. Compared with the depth-tested truth of the renders over a turn to 40 degrees
+// (measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found).
+TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
+  SequenceSettings turn = shortSequence(40.0);
+  turn.stepDeg = 4.0;
+  SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), turn);
+  Tracker tracker(model, sequence.camera());
+  int agree = 0;
+  int total = 0;
+  int hiddenTruth = 0;
+  int hiddenFound = 0;
+  for (int i = 0; i < sequence.frameCount(); ++i) {
+    const SequenceFrame frame = sequence.render(i);
+    if (i == 0) {
+      tracker.setState(
+          stateFromPoints(model, sequence.camera(), frame.points, std::vector<bool>(25, true)));
+    }
+    const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
+    ASSERT_TRUE(step.fit.has_value()) << "frame " << i;
+    ASSERT_EQ(step.row.visibility.size(), 25u);
+    EXPECT_EQ(step.row.visibility, landmarkVisibility(model, step.fit->state.pose));
+    for (std::size_t k = 0; k < 25; ++k) {
+      ASSERT_NE(step.row.visibility[k], Visibility::Unknown);
+      const bool visible = step.row.visibility[k] == Visibility::Visible;
+      agree += visible == frame.visible[k] ? 1 : 0;
+      hiddenTruth += frame.visible[k] ? 0 : 1;
+      hiddenFound += !frame.visible[k] && !visible ? 1 : 0;
+      ++total;
+    }
+  }
+  std::cout << "[ visibility agrees with the renders' depth test for " << agree << " of " << total
+            << " landmark-frames; " << hiddenFound << " of " << hiddenTruth
+            << " hidden ones found ]\n";
+  EXPECT_GT(agree, 0.9 * total);
+
+  // The nearest view decides, whatever view the fit used.
+  Pose pose = Pose::fromDegrees(0.0, 40.0, 0.0, {0.0, 0.0, -600.0});
+  const int nearest = model.nearestView(0.0, 40.0);
+  const auto visibility = landmarkVisibility(model, pose);
+  for (std::size_t k = 0; k < 25; ++k) {
+    EXPECT_EQ(visibility[k] == Visibility::Visible,
+              model.views[static_cast<std::size_t>(nearest)].visible[k]);
+  }
 }
 
 TEST(FitOverlay, DrawsPatchesLandmarksAndLabel) {
