@@ -229,10 +229,18 @@ BoxCalibration boxCalibration(DetectorKind detector, bool profile) {
 }
 
 FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box) {
+  return stateFromBox(model, camera, box, boxCalibration(box.detector, box.profile));
+}
+
+FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box,
+                      const BoxCalibration& calibration) {
   const cv::Rect2d& r = box.box;
   if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.width) &&
         std::isfinite(r.height) && r.width > 0.0 && r.height > 0.0)) {
     throw InputError("initialisation: the face box is empty or not finite");
+  }
+  if (!(calibration.iodPerWidth > 0.0 && std::isfinite(calibration.iodPerWidth))) {
+    throw InputError("initialisation: the box calibration's iodPerWidth must be > 0");
   }
   const ShapeModel& shape = model.shape;
   const auto [eyeA, eyeB] = model.scheme().normalisationPair();
@@ -241,7 +249,6 @@ FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox
   const double iodModel = (left - right).norm();
   if (!(iodModel > 0.0)) throw InputError("initialisation: the model's eye centres coincide");
 
-  const BoxCalibration calibration = boxCalibration(box.detector, box.profile);
   const double side = box.mirrored ? 1.0 : -1.0;  // yaw sign of a profile box
   const bool planar = shape.dims == 2;
   const double profileYaw = box.profile ? side * radians(calibration.yawDeg) : 0.0;
