@@ -25,6 +25,7 @@ struct DetectArgs {
   std::vector<std::string> detectors;
   std::vector<fs::path> calibrations;
   bool calibrate = false;
+  std::string calibrateTo = "eyes";
   bool startError = false;
   bool quiet = false;
   bool json = false;
@@ -37,6 +38,13 @@ void runDetect(const DetectArgs& args) {
   }
   if (!args.calibrations.empty() && !args.startError) {
     throw CLI::ValidationError("--calibration", "goes with --start-error");
+  }
+  DetectorEvaluationSettings settings = args.settings;
+  if (args.calibrateTo == "mean-shape") {
+    if (args.model.empty()) {
+      throw CLI::ValidationError("--calibrate-to", "mean-shape needs --model M");
+    }
+    settings.calibrationTarget = CalibrationTarget::MeanShape;
   }
   std::vector<DetectorKind> kinds;
   for (const std::string& name : args.detectors) {
@@ -60,8 +68,8 @@ void runDetect(const DetectArgs& args) {
   if (!args.quiet) {
     progress = [](double, std::string_view stage) { std::cerr << stage << '\n'; };
   }
-  DetectorEvaluationReport report = evaluateDetectors(images, truths, kinds, args.settings,
-                                                      model ? &*model : nullptr, sets, progress);
+  DetectorEvaluationReport report =
+      evaluateDetectors(images, truths, kinds, settings, model ? &*model : nullptr, sets, progress);
   if (!args.startError) {
     for (DetectorEvaluation& e : report.detectors) e.startErrors.clear();
   }
@@ -108,6 +116,12 @@ void addDetectCommand(CLI::App& root) {
                     "cascade: frontal cascade only");
   command->add_flag("--calibrate", args->calibrate,
                     "report the box calibration measured on the photos (medians)");
+  command
+      ->add_option("--calibrate-to", args->calibrateTo,
+                   "eyes: the truth's eye centres; mean-shape: the model's mean shape fitted to "
+                   "the truth (what stateFromBox places)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"eyes", "mean-shape"}));
   command->add_option("--model", args->model,
                       "Model whose mean shape --start-error places; with --calibrate it also "
                       "gives each truth's yaw and frontal eye distance");

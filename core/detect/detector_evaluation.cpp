@@ -77,24 +77,43 @@ struct Samples {
 
 // What a model says about a truth face: its yaw and the eye distance it would have if frontal at
 // its depth (as box_calibration_test.cpp measures the real photos).
+// With CalibrationTarget::MeanShape, iodFrontal and eyeMid are the mean shape's.
 struct TruthPose {
   double yawDeg = kNaN;
   double iodFrontal = kNaN;
+  Eigen::Vector2d eyeMid = Eigen::Vector2d::Zero();
 };
 
-TruthPose truthPose(const ClmModel& model, const Camera& camera, const TruthFace& truth) {
+TruthPose truthPose(const ClmModel& model, const Camera& camera, const TruthFace& truth,
+                    const DetectorEvaluationSettings& settings) {
   const int n = model.shape.pointCount();
+  const bool meanShape = settings.calibrationTarget == CalibrationTarget::MeanShape;
   Eigen::Matrix2Xd points = Eigen::Matrix2Xd::Zero(2, n);
+  std::vector<bool> present(static_cast<std::size_t>(n), false);
   for (int i = 0; i < n; ++i) {
-    if (truth.points.has(i)) points.col(i) = truth.points.point(i).head<2>();
+    if (!truth.points.has(i)) continue;
+    points.col(i) = truth.points.point(i).head<2>();
+    present[static_cast<std::size_t>(i)] =
+        !meanShape || std::find(settings.startPoints.begin(), settings.startPoints.end(), i) !=
+                          settings.startPoints.end();
   }
-  const FitState state = stateFromPoints(model, camera, points, truth.points.presentMask());
+  PointsFitSettings fit;
+  // The mean shape: a prior weight so large that the shape coefficients stay 0 and the scale 1,
+  // leaving pose and depth to the points.
+  if (meanShape) fit.pointSigmaPixels = 1e5;
+  FitState state = stateFromPoints(model, camera, points, present, fit);
+  if (meanShape) {
+    state.shape.setZero();
+    state.pose.scale = 1.0;
+  }
   const auto [a, b] = model.scheme().normalisationPair();
   const Eigen::Matrix3Xd eye = state.pose.toEye(Eigen::Matrix3Xd(model.shape.shape(state.shape)));
   const double depth = -0.5 * (eye(2, a) + eye(2, b));
   TruthPose pose;
   pose.yawDeg = degrees(state.pose.yaw);
   pose.iodFrontal = camera.focalX() * (eye.col(a) - eye.col(b)).norm() / depth;
+  const Eigen::Matrix2Xd projected = projectShape(model.shape, camera, state);
+  pose.eyeMid = 0.5 * (projected.col(a) + projected.col(b));
   return pose;
 }
 
@@ -252,7 +271,9 @@ DetectorEvaluationReport evaluateDetectors(
     const TruthFace truth = readTruthFace(truths[i]);
     const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings.verticalFovDeg);
     TruthPose pose;
-    if (model) pose = truthPose(*model, camera, truth);
+    if (model) pose = truthPose(*model, camera, truth, settings);
+    const bool toMeanShape = model && settings.calibrationTarget == CalibrationTarget::MeanShape;
+    const Eigen::Vector2d calibrationEyeMid = toMeanShape ? pose.eyeMid : truth.eyeMid;
     std::string line;
     for (std::size_t d = 0; d < detectors.size(); ++d) {
       ImageDetection result;
@@ -281,9 +302,9 @@ DetectorEvaluationReport evaluateDetectors(
         result.annotated = nearestIndex;
         result.box = boxes[static_cast<std::size_t>(nearestIndex)];
         const cv::Rect2d& r = result.box.box;
-        result.offsetX = (truth.eyeMid.x() - (r.x + 0.5 * r.width)) / r.width *
+        result.offsetX = (calibrationEyeMid.x() - (r.x + 0.5 * r.width)) / r.width *
                          (result.box.mirrored ? -1.0 : 1.0);
-        result.offsetY = (truth.eyeMid.y() - (r.y + 0.5 * r.height)) / r.width;
+        result.offsetY = (calibrationEyeMid.y() - (r.y + 0.5 * r.height)) / r.width;
         if (model) {
           for (const CalibrationSet& set : sets) {
             result.startErrors.push_back(startError(
@@ -361,8 +382,10 @@ std::string formatDetectorEvaluationText(const DetectorEvaluationReport& report,
   if (withCalibration) {
     out << "box calibration (medians; frontal boxes on faces within " << std::setprecision(0)
         << report.settings.frontalYawDeg << " degrees"
-        << (report.withModel ? ", frontal eye distance from the model's pose of the truth"
-                             : " of any yaw, image eye distance: give --model for the yaw")
+        << (!report.withModel ? " of any yaw, image eye distance: give --model for the yaw"
+            : report.settings.calibrationTarget == CalibrationTarget::MeanShape
+                ? ", to the model's mean shape fitted to the truth"
+                : ", frontal eye distance from the model's pose of the truth")
         << "):\n";
     out << "detector | boxes | faces | iodPerWidth | eyeOffsetX | eyeOffsetY | yawDeg | sd ratio "
            "/ x / y\n";
@@ -402,12 +425,15 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
                                          bool withCalibration) {
   const FaceDetectorSettings& s = report.settings.detector;
   json j;
-  j["settings"] = {{"min_face_size", s.minFaceSize},
-                   {"max_image_side", s.maxImageSide},
-                   {"cascade_profiles", s.profiles},
-                   {"frontal_yaw_deg", report.settings.frontalYawDeg},
-                   {"vertical_fov_deg", report.settings.verticalFovDeg},
-                   {"with_model", report.withModel}};
+  j["settings"] = {
+      {"min_face_size", s.minFaceSize},
+      {"max_image_side", s.maxImageSide},
+      {"cascade_profiles", s.profiles},
+      {"frontal_yaw_deg", report.settings.frontalYawDeg},
+      {"calibration_target",
+       report.settings.calibrationTarget == CalibrationTarget::MeanShape ? "mean-shape" : "eyes"},
+      {"vertical_fov_deg", report.settings.verticalFovDeg},
+      {"with_model", report.withModel}};
   j["detectors"] = json::array();
   for (const DetectorEvaluation& e : report.detectors) {
     json d = {{"detector", detectorKindName(e.detector)},

@@ -46,8 +46,21 @@ struct CalibrationSet {
 // detector; profile boxes when measured). InputError naming the file when it is not such a report.
 CalibrationSet readCalibrationSet(const std::filesystem::path& path);
 
+// What the box calibration is measured against (with a model).
+enum class CalibrationTarget {
+  // The truth's eye centres: the face's frontal eye distance (from the model's pose and shape
+  // fitted to the truth) and the truth's eye midpoint (docs/initialisation.md's definition).
+  Eyes,
+  // The mean shape (shape coefficients 0, scale 1) fitted to the truth's startPoints by pose and
+  // depth: the eye distance and eye midpoint that stateFromBox would have to give to place the
+  // mean shape best. Differs from Eyes where the model's mean face is proportioned unlike the
+  // photographed ones.
+  MeanShape
+};
+
 struct DetectorEvaluationSettings {
   FaceDetectorSettings detector;
+  CalibrationTarget calibrationTarget = CalibrationTarget::Eyes;
   double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every photo (with a model)
   // Calibration: frontal boxes count on faces within this |yaw| of frontal (with a model, which
   // gives the yaw and the frontal eye distance; without one every frontal box counts, with the
