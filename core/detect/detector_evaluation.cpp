@@ -271,7 +271,13 @@ DetectorEvaluationReport evaluateDetectors(
     const TruthFace truth = readTruthFace(truths[i]);
     const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings.verticalFovDeg);
     TruthPose pose;
-    if (model) pose = truthPose(*model, camera, truth, settings);
+    if (model) {
+      try {
+        pose = truthPose(*model, camera, truth, settings);
+      } catch (const InputError& e) {
+        throwInputError(truths[i], e.what());
+      }
+    }
     const bool toMeanShape = model && settings.calibrationTarget == CalibrationTarget::MeanShape;
     const Eigen::Vector2d calibrationEyeMid = toMeanShape ? pose.eyeMid : truth.eyeMid;
     std::string line;

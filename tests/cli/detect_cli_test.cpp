@@ -64,6 +64,8 @@ TEST(DetectCli, ErrorsNameTheFile) {
   // Usage: the start error needs a model; an unknown detector is bad input.
   result = runClm3d("detect --images " + dir.path().string() + " --start-error");
   EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runClm3d("detect --images " + dir.path().string() + " --calibrate-to mean-shape");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
   result = runClm3d("detect --images " + dir.path().string() + " --detector hog");
   EXPECT_EQ(result.exitCode, 1) << result.output;
   EXPECT_TRUE(contains(result.output, "hog")) << result.output;

@@ -122,6 +122,34 @@ TEST(DetectorEvaluation, CalibrationOfFrontalRendersMatchesTheBoxesAndTheRenderF
   }
 }
 
+TEST(DetectorEvaluation, MeanShapeCalibrationPlacesTheMeanShapeAtLeastAsWell) {
+  test::TempDir dir;
+  const std::vector<test::Scene> scenes = writeFrontalScenes(dir);
+  const std::vector<fs::path> images = listImages(dir.path());
+  const std::vector<fs::path> truths = findTruthFiles(images, {});
+  const ClmModel& model = test::fitTestModel();
+  DetectorEvaluationSettings settings;
+  settings.detector.profiles = false;
+  settings.calibrationTarget = CalibrationTarget::MeanShape;
+  const DetectorEvaluationReport measured =
+      evaluateDetectors(images, truths, {DetectorKind::Cascade}, settings, &model);
+  const CalibrationEstimate& frontal = measured.detectors.front().frontal;
+  ASSERT_GE(frontal.faces, 3);
+  // The head is frontal and the model was trained on its siblings: the mean shape fitted to its
+  // points has about its eye distance and eye midpoint.
+  EXPECT_NEAR(frontal.median.iodPerWidth, 0.395, 0.06);
+  test::writeFile(dir / "measured.json", formatDetectorEvaluationJson(measured, true));
+  const CalibrationSet set = readCalibrationSet(dir / "measured.json");
+  const DetectorEvaluationReport compared = evaluateDetectors(
+      images, truths, {DetectorKind::Cascade}, settings, &model, {CalibrationSet{}, set});
+  const std::vector<StartErrorSummary>& errors = compared.detectors.front().startErrors;
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[1].calibration, "measured.json");
+  // Calibrated on these very scenes, the start is at least about as near as the built-in one.
+  EXPECT_LT(errors[1].mean, errors[0].mean + 0.01);
+  EXPECT_LT(errors[1].mean, 0.2);
+}
+
 TEST(DetectorEvaluation, CountsFoundWrongAndNoFace) {
   test::TempDir dir;
   const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
