@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addIctTextureCommand(app);
   clm3d::cli::addEvalPointsCommand(app);
   clm3d::cli::addPlotCommand(app);
+  clm3d::cli::addDetectCommand(app);
 
   try {
     app.parse(argc, argv);

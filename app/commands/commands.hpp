@@ -20,5 +20,6 @@ void addTruthCommand(CLI::App& root);
 void addIctTextureCommand(CLI::App& root);
 void addEvalPointsCommand(CLI::App& root);
 void addPlotCommand(CLI::App& root);
+void addDetectCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

@@ -40,6 +40,10 @@ BoxCalibration boxCalibration(DetectorKind detector, bool profile);
 // profile boxes (positive for mirrored ones), pitch and roll 0. The planar 2D model keeps yaw 0 and
 // takes the profile face's foreshortened size. Throws InputError for an empty or non-finite box.
 FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box);
+// The same with a given calibration instead of boxCalibration(box.detector, box.profile) (to
+// compare calibrations: `clm3d detect --start-error`).
+FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box,
+                      const BoxCalibration& calibration);
 
 struct PointsFitSettings {
   // Error of the given points (pixels) the shape prior is weighted for (weight = its square). Kept

@@ -1,0 +1,98 @@
+// clm3d detect through the real binary: the table for a folder (an image without a face counted
+// as no face), the JSON report, errors naming the file (missing truth, unreadable image), usage
+// errors; and, when ../shared/data is present, a few LFPW photos with both detectors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+#include "core/common/data_paths.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runClm3d;
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// A 25-point truth with eye centres (points 8 and 11) 40 pixels apart.
+std::string truth25() {
+  std::string text = "version: 1\nn_points: 25\n{\n";
+  for (int i = 0; i < 25; ++i) {
+    text += std::to_string(60 + 2 * i) + " " + std::to_string(70 + (i % 4)) + "\n";
+  }
+  return text + "}\n";
+}
+
+TEST(DetectCli, CountsAnImageWithoutAFaceAndWritesJson) {
+  test::TempDir dir;
+  cv::imwrite((dir / "grey.png").string(), cv::Mat(240, 320, CV_8UC3, cv::Scalar(120, 120, 120)));
+  test::writeFile(dir / "grey.pts", truth25());
+  const fs::path out = dir / "report.json";
+  const auto result = runClm3d("detect --images " + dir.path().string() +
+                               " --detector cascade --calibrate --quiet --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "cascade | 1 | 0 | 1 | 0 |")) << result.output;
+  const nlohmann::json report = nlohmann::json::parse(test::readFile(out));
+  ASSERT_EQ(report["detectors"].size(), 1u);
+  EXPECT_EQ(report["detectors"][0]["no_face"], 1);
+  EXPECT_EQ(report["detectors"][0]["calibration"]["frontal"]["faces"], 0);
+}
+
+TEST(DetectCli, ErrorsNameTheFile) {
+  test::TempDir dir;
+  cv::imwrite((dir / "lonely.png").string(), cv::Mat(100, 100, CV_8UC3, cv::Scalar(0, 0, 0)));
+  auto result = runClm3d("detect --images " + dir.path().string() + " --detector cascade");
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "lonely.png")) << result.output;
+  EXPECT_TRUE(contains(result.output, "no truth")) << result.output;
+
+  fs::remove(dir / "lonely.png");
+  test::writeFile(dir / "broken.png", "not an image");
+  test::writeFile(dir / "broken.pts", truth25());
+  result = runClm3d("detect --images " + dir.path().string() + " --detector cascade --quiet");
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "broken.png")) << result.output;
+
+  // Usage: the start error needs a model; an unknown detector is bad input.
+  result = runClm3d("detect --images " + dir.path().string() + " --start-error");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runClm3d("detect --images " + dir.path().string() + " --calibrate-to mean-shape");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  result = runClm3d("detect --images " + dir.path().string() + " --detector hog");
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "hog")) << result.output;
+}
+
+TEST(DetectCli, LfpwPhotosWhenPresent) {
+  const auto data = sharedDataDir();
+  if (!data || !fs::is_directory(*data / "photos/lfpw/test")) {
+    GTEST_SKIP() << "../shared/data/photos/lfpw not found (set CLM3D_DATA to run this test)";
+  }
+  test::TempDir dir;
+  std::string list;
+  for (const char* name : {"image_0001.jpg", "image_0002.jpg", "image_0004.jpg"}) {
+    list += (*data / "photos/lfpw/test" / name).string() + "\n";
+  }
+  test::writeFile(dir / "list.txt", list);
+  const fs::path out = dir / "report.json";
+  const auto result = runClm3d("detect --images " + (dir / "list.txt").string() +
+                               " --detector all --min-face 80 --calibrate --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "detect 3/3 image_0004.jpg")) << result.output;  // progress
+  const nlohmann::json report = nlohmann::json::parse(test::readFile(out));
+  for (const auto& detector : report["detectors"]) {
+    EXPECT_EQ(detector["images"], 3);
+    EXPECT_GE(detector["found"].get<int>(), 2) << detector.dump();
+  }
+}
+
+}  // namespace
+}  // namespace clm3d
