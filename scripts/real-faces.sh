@@ -94,7 +94,7 @@ for img in "$TEST"/*.jpg; do
       --out "$seq" > /dev/null 2>&1
   [[ -f $OUT/tracks/$stem.csv ]] ||
     "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" \
-      --optimiser rlms --quiet > "$OUT/logs/track-$stem.log" 2>&1
+      --optimiser rlms --min-expert-confidence 0.45 --quiet > "$OUT/logs/track-$stem.log" 2>&1
 done
 for tracks in "$OUT"/tracks/image_*.csv; do
   stem=$(basename "${tracks%.csv}")
@@ -106,6 +106,7 @@ done
 FRANCK=$DATA/videos/franck.mp4
 if [[ -f $FRANCK && ! -f $OUT/tracks/franck.csv ]]; then
   "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" --optimiser rlms \
+    --min-expert-confidence 0.45 \
     --quiet > "$OUT/logs/track-franck.log" 2>&1 || true
 fi
 echo "real-faces: results in $OUT"

@@ -27,6 +27,7 @@
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
+#include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/viz/image_file.hpp"
@@ -272,11 +273,15 @@ void runPhotoSynth(const SynthArgs& args) {
   }
   settings.validate();
   const cv::Mat photo = readImage(args.photo);
-  // 68-point files are converted to the 25 (the earlobes, which have no iBUG point, are missing).
+  // 68-point files are converted to the 25; the truth keeps the points with a fixed 68-point
+  // counterpart (not the earlobes, which have none, nor the jaw contour's cheeks and chin sides).
+  const bool ibug68 = readLandmarks(args.landmarks).size() == 68;
   const LandmarkSet landmarks = readLandmarks(args.landmarks, &Scheme::thesis25());
   LandmarkSet points(landmarks.size(), 2);
   for (int i = 0; i < landmarks.size(); ++i) {
-    if (landmarks.has(i)) points.set(i, Eigen::Vector2d(landmarks.point(i).head<2>()));
+    if (landmarks.has(i) && !(ibug68 && isJawContourPoint(i))) {
+      points.set(i, Eigen::Vector2d(landmarks.point(i).head<2>()));
+    }
   }
   try {
     photoFace(points);

@@ -16,11 +16,6 @@ fs::path landmarkFileFor(const fs::path& image) {
   return *file;
 }
 
-// thesis25 points whose 68-point source is the jaw contour (cheeks and chin sides, 0-based).
-bool fromJawContour(int thesisIndex) {
-  return thesisIndex == 19 || thesisIndex == 20 || thesisIndex == 22 || thesisIndex == 23;
-}
-
 // Point 1, the centre between the eyes, is the midpoint of the inner eye corners in a converted
 // 68-point mark-up: a construction, where the 3D annotations put the point on the bridge of the
 // nose, above and in front of that line. Its patches come from the renders only.
@@ -59,7 +54,7 @@ std::vector<TrainingPhoto> loadTrainingPhotos(const DatasetManifest& manifest) {
       for (int i = 0; i < n; ++i) {
         photo.trusted[static_cast<std::size_t>(i)] =
             photo.points.has(i) &&
-            !(converted && (i == kCentreBetweenTheEyes || (!source.jaw && fromJawContour(i))));
+            !(converted && (i == kCentreBetweenTheEyes || (!source.jaw && isJawContourPoint(i))));
       }
       photos.push_back(std::move(photo));
     }

@@ -113,4 +113,8 @@ LandmarkSet ibug68ToThesis25(const LandmarkSet& ibug68) {
   return result;
 }
 
+bool isJawContourPoint(int thesisIndex) {
+  return thesisIndex == 19 || thesisIndex == 20 || thesisIndex == 22 || thesisIndex == 23;
+}
+
 }  // namespace clm3d

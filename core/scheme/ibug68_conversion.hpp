@@ -21,6 +21,12 @@ struct Thesis25FromIbug68 {
 // 25 entries, in thesis25 order.
 const std::vector<Thesis25FromIbug68>& thesis25FromIbug68Table();
 
+// True for the thesis25 points (0-based) a 68-point mark-up gives only from its jaw contour: the
+// cheeks and the chin sides (thesis 20, 21, 23, 24). The contour's points slide along the jaw from
+// one face to the next, so these have no fixed anatomical place: training does not learn them from
+// photos, and photo sequences leave them out of their truth.
+bool isJawContourPoint(int thesisIndex);
+
 // Converts a 68-point iBUG set (2D or 3D, iBUG .pts order) to thesis25 order and size.
 // Throws std::invalid_argument if ibug68 does not have 68 points.
 LandmarkSet ibug68ToThesis25(const LandmarkSet& ibug68);

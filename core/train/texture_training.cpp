@@ -137,7 +137,19 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
         if (static_cast<int>(columns.size()) < kPhotosForPhotoOnlyExperts) {
           columns.insert(columns.begin(), renders.begin(), renders.end());
         }
-        if (columns.empty()) continue;  // never seen: the expert stays empty, validate() says so
+        if (columns.empty()) {
+          // Hidden in every sample, yet kept in the view (hiddenShare 1, the thesis's "hidden
+          // points off"): the expert learns what lies where the point projects.
+          for (std::size_t col = 0; col < c.has.size(); ++col) {
+            if (c.has[col][static_cast<std::size_t>(landmark)]) {
+              columns.push_back(static_cast<Eigen::Index>(col));
+            }
+          }
+        }
+        if (columns.empty()) {
+          throw Error("training: landmark " + std::to_string(landmark + 1) +
+                      " has no sample in a view that keeps it");
+        }
         Eigen::MatrixXf regions(regionPixels, static_cast<Eigen::Index>(columns.size()));
         for (std::size_t k = 0; k < columns.size(); ++k) {
           regions.col(static_cast<Eigen::Index>(k)) =

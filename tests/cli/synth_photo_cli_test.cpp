@@ -150,7 +150,7 @@ TEST(SynthPhotoCli, TheSameSeedGivesTheSameSequenceAnotherSeedAnother) {
   }
 }
 
-TEST(SynthPhotoCli, A68PointFileLeavesTheEarlobesMissing) {
+TEST(SynthPhotoCli, A68PointFileKeepsThePointsWithAFixedCounterpart) {
   const PhotoFiles& f = photoFiles();
   LandmarkSet ibug(68, 2);
   for (int i = 0; i < 68; ++i) ibug.set(i, Eigen::Vector2d(100.0 + i, 80.0 + (i % 7) * 5.0));
@@ -160,13 +160,15 @@ TEST(SynthPhotoCli, A68PointFileLeavesTheEarlobesMissing) {
   const auto result = runClm3d("synth --photo " + f.photo.string() + " --landmarks " +
                                pts.string() + " --frames 3 --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "points 23/25")) << result.output;
+  EXPECT_TRUE(contains(result.output, "points 19/25")) << result.output;
   const TrackTable truth = readTrackTable(out / "truth.csv");
   ASSERT_EQ(truth.rows.size(), 3U);
   for (const TrackRow& row : truth.rows) {
     EXPECT_TRUE(std::isnan(row.points(0, 18)));  // point 19, left earlobe
     EXPECT_TRUE(std::isnan(row.points(0, 24)));  // point 25, right earlobe
-    EXPECT_FALSE(std::isnan(row.points(0, 21)));
+    EXPECT_TRUE(std::isnan(row.points(0, 19)));   // point 20, left cheek: the jaw contour's
+    EXPECT_TRUE(std::isnan(row.points(0, 22)));   // point 23, right chin side
+    EXPECT_FALSE(std::isnan(row.points(0, 21)));  // point 22, chin centre: iBUG point 8
   }
   // Empty cells, as the tracks CSV writes a missing point.
   EXPECT_TRUE(contains(test::readFile(out / "truth.csv"), ",,"))

@@ -201,5 +201,23 @@ TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
   EXPECT_THROW(loadManifest(dir / "m2.json"), InputError);
 }
 
+// With hidden-point removal off (hidden share 1) a view keeps landmarks hidden in all of its
+// renders; their experts learn from where the points project, so every kept landmark has one.
+TEST(ExpertTrainingInModels, HiddenShareOneGivesEveryKeptLandmarkAnExpert) {
+  TrainSettings s = settings();
+  s.yawsDeg = {-60};
+  s.scales = 1;
+  s.hiddenShare = 1.0;
+  TrainingInput input;
+  input.schemeJson = schemeJsonFor("thesis25");
+  input.subjects.push_back({"head1", &head().mesh, &head().landmarks});
+  input.subjects.push_back({"head2", &otherHead().mesh, &otherHead().landmarks});
+  const ClmModel model = trainModel(input, s);
+  const PatchModel& patches = model.views.front().scales.front();
+  EXPECT_EQ(patches.landmarks.size(), 25u);
+  ASSERT_EQ(patches.experts.size(), 25u);
+  for (const PatchExpert& expert : patches.experts) EXPECT_FALSE(expert.empty());
+}
+
 }  // namespace
 }  // namespace clm3d
