@@ -26,7 +26,7 @@ struct OptimiserSettings {
   double shapePrior = 1.0;    // gauss-newton and fastncc: weight of the shape prior (0 = none)
   // rlms: search window radius (level pixels), kernel SD of the mean-shift (level pixels) and
   // weight of the shape prior in squared level pixels (Saragih et al.'s regularisation r).
-  int rlmsRadius = 6;
+  int rlmsRadius = 4;
   double rlmsSigma = 1.5;
   double rlmsRegularisation = 1.0;
 };

@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <thread>
 
 #include "core/common/error.hpp"
+#include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
@@ -179,81 +177,63 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
   const bool mirror = settings.mirrorRightViews && !settings.singleView;
   std::vector<std::vector<PhotoSample>> results(photos.size());
   std::vector<PhotoPlacement> placed(photos.size());
-  std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
-  std::atomic<bool> stop{false};
-  std::mutex errorMutex;
-  std::exception_ptr error;
-  const auto worker = [&] {
-    try {
-      for (std::size_t k = next++; k < photos.size() && !stop; k = next++) {
-        if (cancel) cancel->throwIfCancelled();
-        const TrainingPhoto& photo = photos[k];
-        PhotoPlacement& placement = placed[k];
-        placement.id = photo.id;
-        Copy original;
-        original.image = cv::imread(photo.image.string(), cv::IMREAD_COLOR);
-        const int trusted =
-            static_cast<int>(std::count(photo.trusted.begin(), photo.trusted.end(), true));
-        if (original.image.empty()) {
-          placement.skipped = "cannot read the image";
-        } else if (trusted < kMinTrustedPoints) {
-          placement.skipped = "only " + std::to_string(trusted) + " trusted points";
-        } else {
-          original.points = photo.points.matrix().topRows(2);
-          original.trusted = photo.trusted;
-          for (int i = 0; i < photo.points.size(); ++i) {
-            if (!photo.trusted[static_cast<std::size_t>(i)]) original.points.col(i).setZero();
-          }
-          const Copy flipped = mirrored(original, scheme);
-          for (int copyIndex = 0; copyIndex < 2; ++copyIndex) {
-            const Copy& copy = copyIndex == 0 ? original : flipped;
-            // The placement itself, then settings.photoJitter perturbed ones.
-            std::vector<Jitter> jitters(1);
-            SplitMixRandom random(mixKey(mixKey(settings.seed, k), copyIndex));
-            const PerturbationSettings& p = settings.perturbation;
-            for (int j = 0; j < settings.photoJitter; ++j) {
-              jitters.push_back({1.0 + random.symmetric(p.scale), random.symmetric(p.rotationDeg),
-                                 Eigen::Vector2d(random.symmetric(p.shiftPixels),
-                                                 random.symmetric(p.shiftPixels))});
-            }
-            std::vector<PhotoSample> placedSamples;
-            PhotoPlacement pose;
-            std::string why;
-            if (!placeCopy(copy, model, settings, views, jitters, placedSamples, pose, why)) {
-              placement.skipped = why;
-              break;
-            }
-            if (copyIndex == 0) {
-              placement.pitchDeg = pose.pitchDeg;
-              placement.yawDeg = pose.yawDeg;
-              placement.rollDeg = pose.rollDeg;
-            }
-            const int view = placedSamples.front().view;
-            if (mirror && views[static_cast<std::size_t>(view)].yawDeg > 0) continue;
-            for (PhotoSample& sample : placedSamples) {
-              sample.id = photo.id + (copyIndex == 0 ? "" : " (mirrored)");
-              results[k].push_back(std::move(sample));
-            }
-            ++placement.samples;
-          }
-        }
-        const int finished = ++done;
-        if (progress) progress(static_cast<double>(finished) / photos.size(), "photos");
+  parallelFor(static_cast<int>(photos.size()), settings.threads, [&](int index) {
+    const auto k = static_cast<std::size_t>(index);
+    if (cancel) cancel->throwIfCancelled();
+    const TrainingPhoto& photo = photos[k];
+    PhotoPlacement& placement = placed[k];
+    placement.id = photo.id;
+    Copy original;
+    original.image = cv::imread(photo.image.string(), cv::IMREAD_COLOR);
+    const int trusted =
+        static_cast<int>(std::count(photo.trusted.begin(), photo.trusted.end(), true));
+    if (original.image.empty()) {
+      placement.skipped = "cannot read the image";
+    } else if (trusted < kMinTrustedPoints) {
+      placement.skipped = "only " + std::to_string(trusted) + " trusted points";
+    } else {
+      original.points = photo.points.matrix().topRows(2);
+      original.trusted = photo.trusted;
+      for (int i = 0; i < photo.points.size(); ++i) {
+        if (!photo.trusted[static_cast<std::size_t>(i)]) original.points.col(i).setZero();
       }
-    } catch (...) {
-      std::lock_guard lock(errorMutex);
-      if (!error) error = std::current_exception();
-      stop = true;
+      const Copy flipped = mirrored(original, scheme);
+      for (int copyIndex = 0; copyIndex < 2; ++copyIndex) {
+        const Copy& copy = copyIndex == 0 ? original : flipped;
+        // The placement itself, then settings.photoJitter perturbed ones.
+        std::vector<Jitter> jitters(1);
+        SplitMixRandom random(mixKey(mixKey(settings.seed, k), copyIndex));
+        const PerturbationSettings& p = settings.perturbation;
+        for (int j = 0; j < settings.photoJitter; ++j) {
+          jitters.push_back(
+              {1.0 + random.symmetric(p.scale), random.symmetric(p.rotationDeg),
+               Eigen::Vector2d(random.symmetric(p.shiftPixels), random.symmetric(p.shiftPixels))});
+        }
+        std::vector<PhotoSample> placedSamples;
+        PhotoPlacement pose;
+        std::string why;
+        if (!placeCopy(copy, model, settings, views, jitters, placedSamples, pose, why)) {
+          placement.skipped = why;
+          break;
+        }
+        if (copyIndex == 0) {
+          placement.pitchDeg = pose.pitchDeg;
+          placement.yawDeg = pose.yawDeg;
+          placement.rollDeg = pose.rollDeg;
+        }
+        const int view = placedSamples.front().view;
+        if (mirror && views[static_cast<std::size_t>(view)].yawDeg > 0) continue;
+        for (PhotoSample& sample : placedSamples) {
+          sample.id = photo.id + (copyIndex == 0 ? "" : " (mirrored)");
+          results[k].push_back(std::move(sample));
+        }
+        ++placement.samples;
+      }
     }
-  };
-  int threads = settings.threads > 0 ? settings.threads
-                                     : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::clamp(threads, 1, std::max<int>(1, static_cast<int>(photos.size())));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
+    const int finished = ++done;
+    if (progress) progress(static_cast<double>(finished) / photos.size(), "photos");
+  });
 
   std::vector<PhotoSample> samples;
   for (auto& list : results) {

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 
 #include "core/common/error.hpp"
+#include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/train/expert_training.hpp"
@@ -31,12 +30,6 @@ struct ViewSamples {
   std::vector<int> visibleCount;          // per landmark (renders only)
   std::vector<int> presentCount;          // per landmark (renders where the landmark exists)
 };
-
-int threadCount(const TrainSettings& settings, int jobs) {
-  int threads = settings.threads > 0 ? settings.threads
-                                     : static_cast<int>(std::thread::hardware_concurrency());
-  return std::clamp(threads, 1, std::max(1, jobs));
-}
 
 // Replaces the patches of a landmark in the columns that lack it (a subject without the point,
 // sampled at an imputed or no position; a photo whose point is not trusted) by the mean of the
@@ -107,75 +100,58 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
   }
   const int regionSize = settings.patchSize + 2 * settings.expertRadius;
   const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
-  std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
-  std::atomic<bool> stop{false};
-  std::mutex errorMutex;
-  std::exception_ptr error;
-  const auto worker = [&] {
-    try {
-      for (std::size_t j = next++; j < jobs.size() && !stop; j = next++) {
-        if (cancel) cancel->throwIfCancelled();
-        const Job& job = jobs[j];
-        const ViewSamples& c = collected[static_cast<std::size_t>(job.view)];
-        PatchModel& patches =
-            models[static_cast<std::size_t>(job.view)].scales[static_cast<std::size_t>(job.scale)];
-        const int landmark = patches.landmarks[static_cast<std::size_t>(job.entry)];
-        const Eigen::MatrixXf& all = c.regions[static_cast<std::size_t>(job.scale)];
-        // Photos where there are enough of them: the renders' landmarks were placed on 3D scans by
-        // another hand than the photos' mark-up, and an expert taught both places blurs between
-        // them. The photos define where a point is on a real face.
-        std::vector<Eigen::Index> renders;
-        std::vector<Eigen::Index> photoColumns;
-        for (std::size_t col = 0; col < c.usable.size(); ++col) {
-          if (c.usable[col][static_cast<std::size_t>(landmark)]) {
-            (static_cast<Eigen::Index>(col) < renderColumns ? renders : photoColumns)
-                .push_back(static_cast<Eigen::Index>(col));
-          }
-        }
-        std::vector<Eigen::Index> columns = std::move(photoColumns);
-        if (static_cast<int>(columns.size()) < kPhotosForPhotoOnlyExperts) {
-          columns.insert(columns.begin(), renders.begin(), renders.end());
-        }
-        if (columns.empty()) {
-          // Hidden in every sample, yet kept in the view (hiddenShare 1, the thesis's "hidden
-          // points off"): the expert learns what lies where the point projects.
-          for (std::size_t col = 0; col < c.has.size(); ++col) {
-            if (c.has[col][static_cast<std::size_t>(landmark)]) {
-              columns.push_back(static_cast<Eigen::Index>(col));
-            }
-          }
-        }
-        if (columns.empty()) {
-          throw Error("training: landmark " + std::to_string(landmark + 1) +
-                      " has no sample in a view that keeps it");
-        }
-        Eigen::MatrixXf regions(regionPixels, static_cast<Eigen::Index>(columns.size()));
-        for (std::size_t k = 0; k < columns.size(); ++k) {
-          regions.col(static_cast<Eigen::Index>(k)) =
-              all.block(Eigen::Index(landmark) * regionPixels, columns[k], regionPixels, 1);
-        }
-        ExpertTrainingSettings expertSettings;
-        expertSettings.patchSize = settings.patchSize;
-        expertSettings.radius = settings.expertRadius;
-        expertSettings.ridge = settings.expertRidge;
-        expertSettings.seed = mixKey(settings.seed, static_cast<std::uint64_t>(j));
-        patches.experts[static_cast<std::size_t>(job.entry)] =
-            trainPatchExpert(regions, expertSettings);
-        const int finished = ++done;
-        if (progress) progress(static_cast<double>(finished) / jobs.size(), "experts");
+  parallelFor(static_cast<int>(jobs.size()), settings.threads, [&](int j) {
+    if (cancel) cancel->throwIfCancelled();
+    const Job& job = jobs[static_cast<std::size_t>(j)];
+    const ViewSamples& c = collected[static_cast<std::size_t>(job.view)];
+    PatchModel& patches =
+        models[static_cast<std::size_t>(job.view)].scales[static_cast<std::size_t>(job.scale)];
+    const int landmark = patches.landmarks[static_cast<std::size_t>(job.entry)];
+    const Eigen::MatrixXf& all = c.regions[static_cast<std::size_t>(job.scale)];
+    // Photos where there are enough of them: the renders' landmarks were placed on 3D scans by
+    // another hand than the photos' mark-up, and an expert taught both places blurs between
+    // them. The photos define where a point is on a real face.
+    std::vector<Eigen::Index> renders;
+    std::vector<Eigen::Index> photoColumns;
+    for (std::size_t col = 0; col < c.usable.size(); ++col) {
+      if (c.usable[col][static_cast<std::size_t>(landmark)]) {
+        (static_cast<Eigen::Index>(col) < renderColumns ? renders : photoColumns)
+            .push_back(static_cast<Eigen::Index>(col));
       }
-    } catch (...) {
-      std::lock_guard lock(errorMutex);
-      if (!error) error = std::current_exception();
-      stop = true;
     }
-  };
-  const int threads = threadCount(settings, static_cast<int>(jobs.size()));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
+    std::vector<Eigen::Index> columns = std::move(photoColumns);
+    if (static_cast<int>(columns.size()) < kPhotosForPhotoOnlyExperts) {
+      columns.insert(columns.begin(), renders.begin(), renders.end());
+    }
+    if (columns.empty()) {
+      // Hidden in every sample, yet kept in the view (hiddenShare 1, the thesis's "hidden
+      // points off"): the expert learns what lies where the point projects.
+      for (std::size_t col = 0; col < c.has.size(); ++col) {
+        if (c.has[col][static_cast<std::size_t>(landmark)]) {
+          columns.push_back(static_cast<Eigen::Index>(col));
+        }
+      }
+    }
+    if (columns.empty()) {
+      throw Error("training: landmark " + std::to_string(landmark + 1) +
+                  " has no sample in a view that keeps it");
+    }
+    Eigen::MatrixXf regions(regionPixels, static_cast<Eigen::Index>(columns.size()));
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      regions.col(static_cast<Eigen::Index>(k)) =
+          all.block(Eigen::Index(landmark) * regionPixels, columns[k], regionPixels, 1);
+    }
+    ExpertTrainingSettings expertSettings;
+    expertSettings.patchSize = settings.patchSize;
+    expertSettings.radius = settings.expertRadius;
+    expertSettings.ridge = settings.expertRidge;
+    expertSettings.seed = mixKey(settings.seed, static_cast<std::uint64_t>(j));
+    patches.experts[static_cast<std::size_t>(job.entry)] =
+        trainPatchExpert(regions, expertSettings);
+    const int finished = ++done;
+    if (progress) progress(static_cast<double>(finished) / jobs.size(), "experts");
+  });
 }
 
 }  // namespace
@@ -287,62 +263,44 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
 
   // Workers take whole subjects, so each renderer (costly to create) draws all of its views.
   const int totalRenders = subjectCount * static_cast<int>(rendered.size()) * samplesPerView;
-  std::atomic<int> nextSubject{0};
   std::atomic<int> done{0};
-  std::atomic<bool> stop{false};
-  std::mutex errorMutex;
-  std::exception_ptr error;
-  const auto worker = [&] {
-    try {
-      for (int subject = nextSubject++; subject < subjectCount && !stop; subject = nextSubject++) {
-        const TrainingSubject& input = subjects[static_cast<std::size_t>(subject)];
+  parallelFor(subjectCount, settings.threads, [&](int subject) {
+    const TrainingSubject& input = subjects[static_cast<std::size_t>(subject)];
+    if (cancel) cancel->throwIfCancelled();
+    OffscreenRenderer renderer(*input.mesh, RenderOptions{settings.supersample});
+    for (int v : rendered) {
+      ViewSamples& target = collected[static_cast<std::size_t>(v)];
+      for (int k = 0; k < samplesPerView; ++k) {
         if (cancel) cancel->throwIfCancelled();
-        OffscreenRenderer renderer(*input.mesh, RenderOptions{settings.supersample});
-        for (int v : rendered) {
-          ViewSamples& target = collected[static_cast<std::size_t>(v)];
-          for (int k = 0; k < samplesPerView && !stop; ++k) {
-            if (cancel) cancel->throwIfCancelled();
-            const SampleSpec spec = drawSample(settings, views[static_cast<std::size_t>(v)],
-                                               settings.seed, subject, v, k);
-            const SamplePatches patches = renderSample(
-                renderer, framing[static_cast<std::size_t>(subject)], eyes, spec, settings);
-            const Eigen::Index column = Eigen::Index(subject) * samplesPerView + k;
-            {
-              std::lock_guard lock(*viewMutex[static_cast<std::size_t>(v)]);
-              for (int s = 0; s < settings.scales; ++s) {
-                const auto level = static_cast<std::size_t>(s);
-                target.grey[level].col(column) = patches.grey[level].reshaped();
-                target.alpha[level].col(column) = patches.alpha[level].reshaped();
-                if (experts) target.regions[level].col(column) = patches.regions[level].reshaped();
-              }
-              for (int i = 0; i < n; ++i) {
-                const auto li = static_cast<std::size_t>(i);
-                const bool present = input.landmarks->has(i);  // not imputed for framing
-                target.visibleCount[li] += present && patches.visible[li] ? 1 : 0;
-                target.presentCount[li] += present ? 1 : 0;
-                target.usable[static_cast<std::size_t>(column)][li] =
-                    present && patches.visible[li];
-              }
-            }
-            const int finished = ++done;
-            if (progress) {
-              progress(static_cast<double>(finished) / totalRenders * (experts ? 0.8 : 0.9),
-                       "rendering");
-            }
+        const SampleSpec spec =
+            drawSample(settings, views[static_cast<std::size_t>(v)], settings.seed, subject, v, k);
+        const SamplePatches patches = renderSample(
+            renderer, framing[static_cast<std::size_t>(subject)], eyes, spec, settings);
+        const Eigen::Index column = Eigen::Index(subject) * samplesPerView + k;
+        {
+          std::lock_guard lock(*viewMutex[static_cast<std::size_t>(v)]);
+          for (int s = 0; s < settings.scales; ++s) {
+            const auto level = static_cast<std::size_t>(s);
+            target.grey[level].col(column) = patches.grey[level].reshaped();
+            target.alpha[level].col(column) = patches.alpha[level].reshaped();
+            if (experts) target.regions[level].col(column) = patches.regions[level].reshaped();
+          }
+          for (int i = 0; i < n; ++i) {
+            const auto li = static_cast<std::size_t>(i);
+            const bool present = input.landmarks->has(i);  // not imputed for framing
+            target.visibleCount[li] += present && patches.visible[li] ? 1 : 0;
+            target.presentCount[li] += present ? 1 : 0;
+            target.usable[static_cast<std::size_t>(column)][li] = present && patches.visible[li];
           }
         }
+        const int finished = ++done;
+        if (progress) {
+          progress(static_cast<double>(finished) / totalRenders * (experts ? 0.8 : 0.9),
+                   "rendering");
+        }
       }
-    } catch (...) {
-      std::lock_guard lock(errorMutex);
-      if (!error) error = std::current_exception();
-      stop = true;
     }
-  };
-  const int threads = threadCount(settings, subjectCount);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
+  });
 
   // Visibility and PCA per rendered view and scale, then the mirrored views.
   std::vector<ViewModel> models(views.size());
