@@ -190,6 +190,8 @@ ClmModel tinyModelWithExperts() {
 TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
   const ClmModel model = tinyModelWithExperts();
   const std::string bytes = serializeModel(model);
+  // The fuzz target's version 2 seed (tests/fuzz/corpus/fuzz_model_file/tiny-experts.clm3d).
+  if (const char* corpus = std::getenv("CLM3D_WRITE_EXPERT_MODEL_SEED")) saveModel(model, corpus);
   const ClmModel loaded = parseModel(bytes, "m.clm3d");
   EXPECT_EQ(serializeModel(loaded), bytes);
   ASSERT_EQ(loaded.views.size(), 3u);
