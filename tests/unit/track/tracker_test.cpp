@@ -152,6 +152,9 @@ TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
   TrackerSettings settings;
   settings.fit.optimiser = "rlms";
   settings.minConfidence = 0.9;  // an NCC threshold every rlms frame would fail: it must not apply
+  // The fixture's experts (12 renders a view) score faces 0.41-0.55, lower than a photo-trained
+  // model's: the threshold for their scale.
+  settings.minExpertConfidence = 0.35;
   Tracker tracker(model, sequence.camera(), settings);
   ASSERT_TRUE(tracker.usesExperts());
   EXPECT_EQ(tracker.minConfidence(), settings.minExpertConfidence);
