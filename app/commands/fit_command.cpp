@@ -10,6 +10,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
+#include "app/commands/interrupt_scope.hpp"
 #include "core/common/error.hpp"
 #include "core/model/model_file.hpp"
 #include "core/track/batch_fit.hpp"
@@ -20,12 +21,6 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<CancelToken*> gCancel{nullptr};
-
-extern "C" void onFitInterrupt(int) {
-  if (CancelToken* token = gCancel.load()) token->cancel();
-}
 
 struct FitArgs {
   fs::path model, image, init, out, overlay;
@@ -83,22 +78,13 @@ void runBatchFit(const FitArgs& args) {
     throwInputError(job.initDir, "no such folder (--init-dir)");
   }
   const ClmModel model = loadModel(args.model);
-  CancelToken token;
-  gCancel = &token;
-  const auto previous = std::signal(SIGINT, onFitInterrupt);
+  InterruptScope interrupt;
   const auto progress = [&args](double fraction, std::string_view stage) {
     if (!args.quiet && fraction > 0.0) std::cerr << stage << '\n';
   };
-  BatchFitSummary summary;
-  try {
-    summary = fitImages(model, job, imageFitSettings(args), progress, &token);
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
-    throw;
-  }
-  std::signal(SIGINT, previous);
-  gCancel = nullptr;
+  const BatchFitSummary summary =
+      fitImages(model, job, imageFitSettings(args), progress, &interrupt.token());
+  interrupt.release();
   double fitSum = 0.0;
   for (const ImageFitOutcome& outcome : summary.outcomes) {
     if (outcome.status == ImageFitStatus::Ok) fitSum += outcome.fitMilliseconds;

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt_scope.hpp"
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/model_frame.hpp"
@@ -36,12 +37,6 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<CancelToken*> gCancel{nullptr};
-
-extern "C" void onSynthInterrupt(int) {
-  if (CancelToken* token = gCancel.load()) token->cancel();
-}
 
 struct SynthArgs {
   fs::path out;
@@ -290,9 +285,7 @@ void runPhotoSynth(const SynthArgs& args) {
   }
 
   const auto start = std::chrono::steady_clock::now();
-  CancelToken token;
-  gCancel = &token;
-  const auto previous = std::signal(SIGINT, onSynthInterrupt);
+  InterruptScope interrupt;
   DecileProgress decile(settings.frames, start);
   const auto progress = [&decile](double fraction, std::string_view stage) {
     decile(fraction, stage);
@@ -302,18 +295,11 @@ void runPhotoSynth(const SynthArgs& args) {
   try {
     summary =
         writePhotoSequence(photo, points, settings, {args.photo.string(), args.landmarks.string()},
-                           files, progress, &token);
+                           files, progress, &interrupt.token());
   } catch (const Cancelled&) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
     throw Error("cancelled, no sequence written");
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
-    throw;
   }
-  std::signal(SIGINT, previous);
-  gCancel = nullptr;
+  interrupt.release();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "synth: " << summary.frames << " frames " << summary.frameSize.width << "x"
@@ -362,9 +348,7 @@ void runSynth(const SynthArgs& args) {
   const Subject subject = scan ? loadScan(args) : makeHead(args);
   const double loadSeconds = elapsed();
 
-  CancelToken token;
-  gCancel = &token;
-  const auto previous = std::signal(SIGINT, onSynthInterrupt);
+  InterruptScope interrupt;
   DecileProgress decile(frames, std::chrono::steady_clock::now());
   const auto progress = [&decile](double fraction, std::string_view stage) {
     decile(fraction, stage);
@@ -373,18 +357,11 @@ void runSynth(const SynthArgs& args) {
   SequenceSummary summary;
   try {
     summary = writeSyntheticSequence(subject.mesh, subject.landmarks, Scheme::thesis25(), settings,
-                                     subject.description, files, progress, &token);
+                                     subject.description, files, progress, &interrupt.token());
   } catch (const Cancelled&) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
     throw Error("cancelled, no sequence written");
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
-    throw;
   }
-  std::signal(SIGINT, previous);
-  gCancel = nullptr;
+  interrupt.release();
   const double renderSeconds = elapsed() - loadSeconds;
 
   std::ostringstream angles;

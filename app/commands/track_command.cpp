@@ -13,6 +13,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
+#include "app/commands/interrupt_scope.hpp"
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
@@ -26,12 +27,6 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<CancelToken*> gCancel{nullptr};
-
-extern "C" void onTrackInterrupt(int) {
-  if (CancelToken* token = gCancel.load()) token->cancel();
-}
 
 struct TrackArgs {
   fs::path model, video, out, overlay, init;
@@ -70,9 +65,7 @@ void runTrack(const TrackArgs& args) {
     }
   }
 
-  CancelToken token;
-  gCancel = &token;
-  const auto previous = std::signal(SIGINT, onTrackInterrupt);
+  InterruptScope interrupt;
   const auto begin = std::chrono::steady_clock::now();
   auto lastReport = begin;
   TrackTable table;
@@ -92,12 +85,12 @@ void runTrack(const TrackArgs& args) {
   TrackSummary summary;
   bool cancelled = false;
   try {
-    summary = trackVideo(args.video, model, settings, table, perFrame, progress, &token, initial);
+    summary = trackVideo(args.video, model, settings, table, perFrame, progress, &interrupt.token(),
+                         initial);
   } catch (const Cancelled&) {
     cancelled = true;
   }
-  std::signal(SIGINT, previous);
-  gCancel = nullptr;
+  interrupt.release();
   if (!args.quiet) std::cerr << '\n';
   writeTrackTable(args.out, table);
   if (overlay) overlay->close();

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt_scope.hpp"
 #include "core/common/error.hpp"
 #include "core/model/model_file.hpp"
 #include "core/train/report.hpp"
@@ -20,12 +21,6 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<CancelToken*> gCancel{nullptr};
-
-extern "C" void onInterrupt(int) {
-  if (CancelToken* token = gCancel.load()) token->cancel();
-}
 
 struct TrainArgs {
   fs::path dataset, out, report;
@@ -58,9 +53,7 @@ void runTrain(TrainArgs& args) {
   args.settings.mirrorRightViews = !args.noMirror;
   args.settings.samplesPerView = args.samples;
   args.settings.augmentationFromManifest = !args.noAugmentation;
-  CancelToken token;
-  gCancel = &token;
-  const auto previous = std::signal(SIGINT, onInterrupt);
+  InterruptScope interrupt;
   const auto start = std::chrono::steady_clock::now();
   std::mutex printMutex;
   int lastDecile = -1;
@@ -81,7 +74,7 @@ void runTrain(TrainArgs& args) {
   try {
     std::vector<PhotoPlacement> placements;
     ClmModel model = trainFromManifest(args.dataset, args.settings, std::string(CLM3D_VERSION),
-                                       progress, &token, &placements);
+                                       progress, &interrupt.token(), &placements);
     if (!placements.empty()) {
       int used = 0;
       int copies = 0;
@@ -96,11 +89,10 @@ void runTrain(TrainArgs& args) {
                 << " samples with the mirror images); a model trained on photos inherits their "
                    "licence terms\n";
     }
-    token.throwIfCancelled();
+    interrupt.token().throwIfCancelled();
     std::cerr << "train: saving\n";
     saveModel(model, args.out);
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
+    interrupt.release();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     printSummary(model, args.out, seconds);
@@ -109,13 +101,7 @@ void runTrain(TrainArgs& args) {
       std::cout << "report: " << files.size() << " pictures in " << args.report.string() << '\n';
     }
   } catch (const Cancelled&) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
     throw Error("cancelled, no model written");
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    gCancel = nullptr;
-    throw;
   }
 }
 

@@ -40,8 +40,8 @@ void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSiz
   // products directly: 13 x 13 windows of 20 x 20 cost about 70 000 multiply-adds.
   const int rows = region.rows - patchSize + 1;
   const int cols = region.cols - patchSize + 1;
-  cv::Mat sum;
-  cv::Mat squares;
+  thread_local cv::Mat sum;  // scratch: this runs per landmark and iteration of every frame
+  thread_local cv::Mat squares;
   cv::integral(region, sum, squares, CV_64F, CV_64F);
   scores.create(rows, cols, CV_32FC1);
   using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -78,6 +78,21 @@ void expertResponse(const cv::Mat& region, const PatchExpert& expert, int patchS
   }
 }
 
+double inPlaneRotation(const Eigen::Matrix2Xd& upright, const Eigen::Matrix2Xd& turned) {
+  const Eigen::Vector2d a0 = upright.rowwise().mean();
+  const Eigen::Vector2d b0 = turned.rowwise().mean();
+  double dot = 0.0;
+  double cross = 0.0;
+  for (Eigen::Index k = 0; k < upright.cols(); ++k) {
+    const Eigen::Vector2d a = upright.col(k) - a0;
+    const Eigen::Vector2d b = turned.col(k) - b0;
+    dot += a.dot(b);
+    cross += a.x() * b.y() - a.y() * b.x();
+  }
+  // cross > 0 turns +x towards +y: clockwise on screen, the opposite of sampleRegion's angle.
+  return -std::atan2(cross, dot);
+}
+
 double faceInPlaneAngle(const ShapeProjector& projector,
                         const Eigen::Ref<const Eigen::VectorXd>& p) {
   const int m = projector.landmarkCount();
@@ -88,18 +103,7 @@ double faceInPlaneAngle(const ShapeProjector& projector,
   Eigen::VectorXd unrolled = p;
   unrolled[kParamRoll] = 0.0;
   projector.project(unrolled, upright);
-  const Eigen::Vector2d a0 = upright.rowwise().mean();
-  const Eigen::Vector2d b0 = turned.rowwise().mean();
-  double dot = 0.0;
-  double cross = 0.0;
-  for (int k = 0; k < m; ++k) {
-    const Eigen::Vector2d a = upright.col(k) - a0;
-    const Eigen::Vector2d b = turned.col(k) - b0;
-    dot += a.dot(b);
-    cross += a.x() * b.y() - a.y() * b.x();
-  }
-  // cross > 0 turns +x towards +y: clockwise on screen, the opposite of sampleRegion's angle.
-  return -std::atan2(cross, dot);
+  return inPlaneRotation(upright, turned);
 }
 
 double meanExpertResponse(const cv::Mat& image, const ShapeProjector& projector,

@@ -32,9 +32,14 @@ void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSiz
 void expertResponse(const cv::Mat& region, const PatchExpert& expert, int patchSize,
                     cv::Mat& response);
 
+// The least-squares 2D rotation (sampleRegion's sense: counter-clockwise on screen) that takes the
+// centred points `upright` to the centred points `turned` (same count, in the same order).
+double inPlaneRotation(const Eigen::Matrix2Xd& upright, const Eigen::Matrix2Xd& turned);
+
 // The face's in-plane rotation at p in the sense of sampleRegion's angle: the least-squares 2D
 // rotation from the projector's points at roll 0 to its points at p.
-double faceInPlaneAngle(const ShapeProjector& projector, const Eigen::Ref<const Eigen::VectorXd>& p);
+double faceInPlaneAngle(const ShapeProjector& projector,
+                        const Eigen::Ref<const Eigen::VectorXd>& p);
 
 // The experts' mean response at the projector's points of p, each at offset 0 in the face's
 // upright frame: the probability that the landmarks are where p puts them, in (0, 1).

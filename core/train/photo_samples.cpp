@@ -7,11 +7,13 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "core/common/error.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
+#include "core/fit/response_map.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/image/pyramid.hpp"
 #include "core/train/training_sample.hpp"
@@ -58,24 +60,6 @@ Copy mirrored(const Copy& original, const Scheme& scheme) {
   return copy;
 }
 
-// The in-plane rotation (sampleRegion's sense: counter-clockwise on screen) that takes the
-// upright projection to the fitted one.
-double inPlaneAngle(const Eigen::Matrix2Xd& upright, const Eigen::Matrix2Xd& turned) {
-  const Eigen::Vector2d a0 = upright.rowwise().mean();
-  const Eigen::Vector2d b0 = turned.rowwise().mean();
-  double dot = 0.0;
-  double cross = 0.0;
-  for (Eigen::Index k = 0; k < upright.cols(); ++k) {
-    const Eigen::Vector2d a = upright.col(k) - a0;
-    const Eigen::Vector2d b = turned.col(k) - b0;
-    dot += a.dot(b);
-    cross += a.x() * b.y() - a.y() * b.x();
-  }
-  return -std::atan2(cross, dot);
-}
-
-// One copy placed: fitted, turned upright, scaled, sampled. Returns false (with the reason) when
-// it cannot be used.
 // A perturbation of a photo's placement, like a render's: relative scale, in-plane rotation
 // (degrees) and shift (pixels at the finest scale).
 struct Jitter {
@@ -83,9 +67,10 @@ struct Jitter {
   Eigen::Vector2d shift{0.0, 0.0};
 };
 
-bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& settings,
-               const std::vector<ViewCentre>& views, const std::vector<Jitter>& jitters,
-               std::vector<PhotoSample>& samples, PhotoPlacement& placed, std::string& why) {
+bool placeCopy(const Copy& copy, const ClmModel& model, std::pair<int, int> eyes,
+               const TrainSettings& settings, const std::vector<ViewCentre>& views,
+               const std::vector<Jitter>& jitters, std::vector<PhotoSample>& samples,
+               PhotoPlacement& placed, std::string& why) {
   const Camera camera = Camera::fromVerticalFov(copy.image.cols, copy.image.rows, kPhotoFovDeg);
   FitState state;
   try {
@@ -100,7 +85,7 @@ bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& set
   const int view = nearestView(views, placed.pitchDeg, placed.yawDeg);
 
   // Scale: the fitted 3D eye distance at the face's depth, as frameSample sizes the renders.
-  const auto [left, right] = model.scheme().normalisationPair();
+  const auto [left, right] = eyes;
   const Eigen::Matrix3Xd shape3d = model.shape.shape(state.shape);
   const double eyeMm = (shape3d.col(left) - shape3d.col(right)).norm();
   const double pixelsPerMm =
@@ -113,7 +98,7 @@ bool placeCopy(const Copy& copy, const ClmModel& model, const TrainSettings& set
   const Eigen::Matrix2Xd turned = projectState(model, camera, state);
   FitState upright = state;
   upright.pose.roll = 0.0;
-  const double angle = inPlaneAngle(projectState(model, camera, upright), turned);
+  const double angle = inPlaneRotation(projectState(model, camera, upright), turned);
   const Eigen::Vector2d centre = turned.rowwise().mean();
 
   // Shrinking by area first so that a large photo does not alias, then turning with bilinear.
@@ -173,6 +158,7 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
   model.shape = shape;
   model.singleView = settings.singleView;
   const Scheme scheme = model.scheme();
+  const std::pair<int, int> eyes = scheme.normalisationPair();
   const std::vector<ViewCentre> views = settings.views();
   const bool mirror = settings.mirrorRightViews && !settings.singleView;
   std::vector<std::vector<PhotoSample>> results(photos.size());
@@ -213,7 +199,7 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
         std::vector<PhotoSample> placedSamples;
         PhotoPlacement pose;
         std::string why;
-        if (!placeCopy(copy, model, settings, views, jitters, placedSamples, pose, why)) {
+        if (!placeCopy(copy, model, eyes, settings, views, jitters, placedSamples, pose, why)) {
           placement.skipped = why;
           break;
         }
