@@ -22,6 +22,15 @@ auto recordFits(std::vector<std::optional<FrameFit>>& fits) {
   };
 }
 
+// `model`, or (when null) the model loaded from `path` on the job's thread.
+std::shared_ptr<const ClmModel> modelOrLoad(std::shared_ptr<const ClmModel> model,
+                                            const std::filesystem::path& path,
+                                            const ProgressCallback& progress) {
+  if (model) return model;
+  progress(0.0, "loading the model");
+  return std::make_shared<const ClmModel>(loadModel(path));
+}
+
 }  // namespace
 
 JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path modelPath,
@@ -30,12 +39,7 @@ JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path model
   return [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
           settings = std::move(settings),
           outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
-    if (model) {
-      outcome->model = model;
-    } else {
-      progress(0.0, "loading the model");
-      outcome->model = std::make_shared<const ClmModel>(loadModel(modelPath));
-    }
+    outcome->model = modelOrLoad(model, modelPath, progress);
     cancel.throwIfCancelled();
     outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
                                   recordFits(outcome->fits), progress, &cancel);
@@ -83,12 +87,7 @@ JobRunner::Job loopRetrackJob(std::filesystem::path video, std::filesystem::path
       [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
        settings = std::move(settings), frames = std::move(frames), previous = std::move(previous),
        rules, outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
-        if (model) {
-          outcome->model = model;
-        } else {
-          progress(0.0, "loading the model");
-          outcome->model = std::make_shared<const ClmModel>(loadModel(modelPath));
-        }
+        outcome->model = modelOrLoad(model, modelPath, progress);
         cancel.throwIfCancelled();
         const FitState state = stateFromCorrected(video, *outcome->model, outcome->points);
         retrackSpan(video, *outcome->model, settings, state, -1, frames, previous, rules,

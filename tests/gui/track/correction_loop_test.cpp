@@ -40,20 +40,6 @@ constexpr int kStretchFirst = 8;  // the perturbed stretch: a lost track
 constexpr int kStretchLast = 17;
 constexpr double kGoal = 0.05;  // every frame within this share of the eye distance
 
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
-
 // Mean point distance over the eye distance (eq. 5.1), points missing in either left out.
 double frameError(const Eigen::Matrix2Xd& points, const Eigen::Matrix2Xd& truth) {
   const double eyes = (truth.col(7) - truth.col(10)).norm();
@@ -164,7 +150,7 @@ class CorrectionLoopTest : public QObject {
     project_ = createProject(root_ / "project", "loop-test");
     const fs::path model = project_.folder / "models" / "fixture.clm3d";
     sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    runOffGuiThread([&] {
+    test::runOffGuiThread([&] {
       fs::create_directories(model.parent_path());
       saveModel(test::fitTestModel(), model);
       SequenceSettings settings;
