@@ -2,7 +2,6 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
-#include <QFormLayout>
 #include <QGridLayout>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -13,7 +12,7 @@ namespace clm3d::ui {
 
 ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"), parent) {
   setObjectName(QStringLiteral("reviewPanel"));
-  loop_ = new QCheckBox(tr("Re-track after each drag (L)"), this);
+  loop_ = new QCheckBox(tr("Re-track after drags (L)"), this);
   loop_->setObjectName(QStringLiteral("loopCheck"));
   loop_->setChecked(true);
   loop_->setToolTip(
@@ -26,6 +25,7 @@ ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"),
   lowConfidence_->setDecimals(2);
   lowConfidence_->setSingleStep(0.05);
   lowConfidence_->setValue(ReviewRules{}.lowConfidence);
+  lowConfidence_->setPrefix(tr("review below "));
   lowConfidence_->setToolTip(tr("Frames below this confidence need review (N), as do failed ones"));
 
   const auto button = [this](const QString& text, const QString& name, const QString& tooltip) {
@@ -45,27 +45,26 @@ ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"),
   QPushButton* nextKey = button(tr("Next keyframe (J)"), QStringLiteral("nextKeyframeButton"),
                                 tr("Go to the next keyframe (J; Shift+J: the previous one)"));
   QPushButton* previousKey =
-      button(tr("Previous keyframe (Shift+J)"), QStringLiteral("previousKeyframeButton"),
+      button(tr("Prev. keyframe (Shift+J)"), QStringLiteral("previousKeyframeButton"),
              tr("Go to the previous keyframe (Shift+J)"));
   QPushButton* backward =
-      button(tr("Re-track backwards (Shift+R)"), QStringLiteral("backwardButton"),
+      button(tr("Re-track back (Shift+R)"), QStringLiteral("backwardButton"),
              tr("Track the frames before this one again from its points, back to the previous "
                 "keyframe, stopping at a failed frame (Shift+R)"));
   accept_ = accept;
   backward_ = backward;
 
+  // Four rows, so the side column still fits a 800-pixel-high window.
   auto* grid = new QGridLayout;
-  grid->addWidget(next, 0, 0);
-  grid->addWidget(previous, 0, 1);
-  grid->addWidget(nextKey, 1, 0);
-  grid->addWidget(previousKey, 1, 1);
-  grid->addWidget(accept, 2, 0, 1, 2);
-  grid->addWidget(backward, 3, 0, 1, 2);
-  auto* form = new QFormLayout;
-  form->addRow(tr("Review below confidence:"), lowConfidence_);
+  grid->addWidget(loop_, 0, 0);
+  grid->addWidget(lowConfidence_, 0, 1);
+  grid->addWidget(next, 1, 0);
+  grid->addWidget(previous, 1, 1);
+  grid->addWidget(nextKey, 2, 0);
+  grid->addWidget(previousKey, 2, 1);
+  grid->addWidget(accept, 3, 0);
+  grid->addWidget(backward, 3, 1);
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(loop_);
-  layout->addLayout(form);
   layout->addLayout(grid);
 
   connect(loop_, &QCheckBox::toggled, this, &ReviewPanel::loopToggled);
