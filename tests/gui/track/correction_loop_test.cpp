@@ -17,14 +17,12 @@
 #include <cmath>
 #include <thread>
 
-#include "core/eval/synthetic_sequence.hpp"
-#include "core/model/model_file.hpp"
 #include "core/project/autosave.hpp"
 #include "core/project/project.hpp"
 #include "core/track/ground_truth.hpp"
 #include "core/track/tracker_options.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
-#include "tests/support/fit_fixture.hpp"
+#include "tests/gui/track/track_fixture.hpp"
 #include "ui/track/frame_view.hpp"
 #include "ui/track/review_panel.hpp"
 #include "ui/track/track_page.hpp"
@@ -148,23 +146,10 @@ class CorrectionLoopTest : public QObject {
       fs::remove_all(root_);
     }
     project_ = createProject(root_ / "project", "loop-test");
-    const fs::path model = project_.folder / "models" / "fixture.clm3d";
-    sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    test::runOffGuiThread([&] {
-      fs::create_directories(model.parent_path());
-      saveModel(test::fitTestModel(), model);
-      SequenceSettings settings;
-      settings.yawFromDeg = 0.0;
-      settings.yawToDeg = 1.5 * (kFrames - 1);
-      settings.stepDeg = 1.5;
-      settings.width = 320;
-      settings.height = 240;
-      settings.interOcularPixels = 56.0;
-      settings.supersample = 1;
-      const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-      summary_ = writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings,
-                                        SequenceSubject{}, sequence_);
-    });
+    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 1.5);
+    const fs::path& model = fixture.model;
+    sequence_ = fixture.sequence;
+    summary_ = fixture.summary;
     QCOMPARE(summary_.frames, kFrames);
     project_.models.push_back(model);
     project_.videos.push_back(sequence_.video);
