@@ -14,16 +14,20 @@ TrackFilesPanel::TrackFilesPanel(QWidget* parent) : QGroupBox(tr("Tracks of this
   setObjectName("trackFilesPanel");
   list_ = new QListWidget(this);
   list_->setObjectName("trackFilesList");
-  list_->setMinimumHeight(90);
+  // Small enough that the page still fits a 1280x800 window; long names are elided in the middle
+  // (the tooltip has the whole path).
+  list_->setMinimumHeight(40);
+  list_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  list_->setTextElideMode(Qt::ElideMiddle);
   list_->setToolTip(tr("The project's tracks and ground-truth sets of this video"));
-  load_ = new QPushButton(tr("Load as track"), this);
+  load_ = new QPushButton(tr("Load"), this);
   load_->setObjectName("loadTrackButton");
   load_->setToolTip(tr("Review this file's points as the track, without tracking again"));
   compare_ = new QPushButton(tr("Compare"), this);
   compare_->setObjectName("compareTrackButton");
   compare_->setToolTip(
       tr("Draw this file's points over the frame and plot its difference to the track per frame"));
-  browse_ = new QPushButton(tr("Open CSV…"), this);
+  browse_ = new QPushButton(tr("Open…"), this);
   browse_->setObjectName("openTracksButton");
   browse_->setToolTip(tr("Load a tracks or ground-truth CSV from anywhere as the track"));
   overlay_ = new QCheckBox(tr("Draw the compared points"), this);
@@ -33,10 +37,10 @@ TrackFilesPanel::TrackFilesPanel(QWidget* parent) : QGroupBox(tr("Tracks of this
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(load_);
   buttons->addWidget(compare_);
+  buttons->addWidget(browse_);
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(list_);
   layout->addLayout(buttons);
-  layout->addWidget(browse_);
   layout->addWidget(overlay_);
 
   connect(list_, &QListWidget::currentRowChanged, this, [this] { updateButtons(); });
@@ -71,10 +75,10 @@ void TrackFilesPanel::setFiles(std::vector<TrackFileEntry> files, const fs::path
   for (const TrackFileEntry& entry : files_) {
     QString text = QString::fromStdString(entry.path.filename().string());
     QStringList roles;
-    if (entry.groundTruth) roles << tr("ground truth");
-    if (entry.path == track) roles << tr("shown as track");
+    if (entry.groundTruth) roles << tr("truth");
+    if (entry.path == track) roles << tr("track");
     if (entry.path == compared) roles << tr("compared");
-    if (!roles.isEmpty()) text += "  (" + roles.join(", ") + ")";
+    if (!roles.isEmpty()) text += "  [" + roles.join(", ") + "]";
     auto* item = new QListWidgetItem(text, list_);
     item->setData(Qt::UserRole, QString::fromStdString(entry.path.string()));
     item->setToolTip(QString::fromStdString(entry.path.string()));
