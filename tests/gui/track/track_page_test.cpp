@@ -38,22 +38,6 @@ namespace fs = std::filesystem;
 
 constexpr int kFrames = 16;
 
-// Runs `work` on a worker thread and waits: training and rendering use the offscreen renderer,
-// which must not run on the GUI thread.
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
-
 QString screenshotFolder() {
   return QProcessEnvironment::systemEnvironment().value("CLM3D_STUDIO_SCREENSHOTS");
 }
@@ -85,7 +69,7 @@ class TrackPageTest : public QObject {
     project_ = createProject(temp_.path() / "project", "track-test");
     model_ = project_.folder / "models" / "fixture.clm3d";
     sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    runOffGuiThread([&] {
+    test::runOffGuiThread([&] {
       fs::create_directories(model_.parent_path());
       saveModel(test::fitTestModel(), model_);
       SequenceSettings settings;

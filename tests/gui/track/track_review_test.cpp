@@ -32,21 +32,6 @@ namespace fs = std::filesystem;
 constexpr int kFrames = 12;
 constexpr double kShiftPixels = 3.0;
 
-// Training and rendering use the offscreen renderer, which must not run on the GUI thread.
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
-
 // The truth with every point moved kShiftPixels to the right: a "track" whose difference to the
 // truth is known exactly.
 TrackTable shifted(TrackTable table, double dx) {
@@ -88,7 +73,7 @@ class TrackReviewTest : public QObject {
     project_ = createProject(temp_.path() / "project", "review-test");
     model_ = project_layout::modelFile(project_.folder, "fixture");
     sequence_ = SequenceFiles::inFolder(project_.folder / "sequence");
-    runOffGuiThread([&] {
+    test::runOffGuiThread([&] {
       fs::create_directories(model_.parent_path());
       saveModel(test::fitTestModel(), model_);
       SequenceSettings settings;
