@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "core/common/data_paths.hpp"
 #include "core/common/decile_progress.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/dataset/manifest_writer.hpp"
@@ -50,6 +51,8 @@ struct DemoArgs {
   int samples = 3;
   double sequenceStep = 2.0;
   std::string optimiser = "fastncc";
+  bool real = false;  // also a real face (needs the shared data)
+  fs::path realManifest = "resources/datasets/real.json";  // relative to the working folder
 };
 
 // The held-out head of the test sequence: a seed none of the training heads uses.
@@ -231,8 +234,72 @@ ClmModel trainDemoModel(const DemoArgs& args, const std::vector<SynthHead>& head
   return model;
 }
 
+struct RealDemo {
+  fs::path model, video, tracks;
+};
+
+// --real's inputs, checked before the demo starts so a missing one fails at once.
+RealDemo findRealInputs(const DemoArgs& args) {
+  const std::optional<fs::path> data = sharedDataDir();
+  if (!data) {
+    throw InputError(
+        "demo --real: the shared data was not found (../shared/data beside the repository, or "
+        "set CLM3D_DATA); it holds the photos, scans and franck.mp4 the real demo uses");
+  }
+  RealDemo real;
+  real.video = *data / "videos" / "franck.mp4";
+  if (!fs::is_regular_file(real.video)) {
+    throw InputError("demo --real: " + real.video.string() + ": file not found");
+  }
+  if (!fs::is_regular_file(args.realManifest)) {
+    throw InputError("demo --real: " + args.realManifest.string() +
+                     ": dataset manifest not found (run from the repository's root, or give "
+                     "--real-manifest)");
+  }
+  real.model = project_layout::modelFile(args.out, "real");
+  return real;
+}
+
+// --real: the real-face model of the manifest (LFPW photos among its sources) and franck.mp4 of
+// the shared data tracked with it, into the same project, so the studio shows a real person too.
+RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
+  std::cerr << "demo: training the real-face model of " << args.realManifest.string()
+            << " (minutes)\n";
+  TrainSettings settings;
+  settings.textureMaxModes = 16;  // as docs/real-faces.md: 17 MB instead of 139 MB
+  settings.threads = args.threads;
+  const auto trainStart = std::chrono::steady_clock::now();
+  DecileProgress progress = stderrProgress("real-face training");
+  const ClmModel model =
+      trainFromManifest(args.realManifest, settings, CLM3D_VERSION, progress.callback());
+  fs::create_directories(real.model.parent_path());
+  saveModel(model, real.model);
+  std::cout << "demo: trained the real-face model in " << std::setprecision(1)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - trainStart).count()
+            << " s: " << real.model.string()
+            << "\n  LICENCE: it learnt from LFPW photos, which are for research use only (300-W "
+               "terms); the model inherits those terms: do not redistribute it or use it "
+               "commercially\n";
+
+  TrackerSettings tracking;
+  tracking.fit.optimiser = "rlms";
+  real.tracks = project_layout::tracksFile(args.out, real.video, real.model);
+  fs::create_directories(real.tracks.parent_path());
+  TrackTable tracks;
+  DecileProgress trackProgress = stderrProgress("tracking franck.mp4");
+  const TrackSummary tracked =
+      trackVideo(real.video, model, tracking, tracks, {}, trackProgress.callback());
+  writeTrackTable(real.tracks, tracks);
+  std::cout << "demo: tracked " << tracked.frames << " frames of " << real.video.string()
+            << " with rlms (" << tracked.succeeded << " succeeded, " << tracked.detections
+            << " detections): " << real.tracks.string() << '\n';
+  return real;
+}
+
 void runDemo(const DemoArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  const std::optional<RealDemo> realInputs =
+      args.real ? std::optional<RealDemo>(findRealInputs(args)) : std::nullopt;
   const fs::path headsDir = args.out / "heads";
   const fs::path rendersDir = args.out / "renders";
   fs::create_directories(headsDir);
@@ -315,6 +382,14 @@ void runDemo(const DemoArgs& args) {
   project.tracks = {fs::absolute(tracksPath)};
   project.groundTruth = {fs::absolute(files.truth)};
   saveProject(project);
+  if (realInputs) {
+    // The synthetic project is saved first, so a failed or interrupted real part leaves it whole.
+    const RealDemo real = runRealDemo(args, *realInputs);
+    project.models.push_back(fs::absolute(real.model));
+    project.videos.push_back(real.video);
+    project.tracks.push_back(fs::absolute(real.tracks));
+    saveProject(project);
+  }
 
   std::cout << "\n"
             << formatReportText(report) << "\nevaluation plots: " << evalDir.string()
@@ -351,6 +426,14 @@ void addDemoCommand(CLI::App& root) {
       ->check(CLI::Range(0.25, 20.0));
   command->add_option("--optimiser", args->optimiser, "Optimiser the tracker uses")
       ->default_val("fastncc");
+  command->add_flag("--real", args->real,
+                    "Also train the real-face model of --real-manifest (needs ../shared/data or "
+                    "$CLM3D_DATA; the model inherits LFPW's research-only terms) and track "
+                    "videos/franck.mp4 of the shared data with it into the same project");
+  command
+      ->add_option("--real-manifest", args->realManifest,
+                   "Dataset manifest of the real-face model (with --real)")
+      ->default_val("resources/datasets/real.json");
   command->callback([args] { runDemo(*args); });
 }
 

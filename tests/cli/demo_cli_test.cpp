@@ -53,5 +53,18 @@ TEST(DemoCli, RunsTheWholeChainAndEndsWithTheErrorSummary) {
   EXPECT_EQ(manifest.scheme, "thesis25");
 }
 
+TEST(DemoCli, RealWithoutTheSharedDataFailsAtOnceNamingWhatIsMissing) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir / "empty-data");
+  const auto result = test::runCommand("CLM3D_DATA=" + (dir / "empty-data").string() + " " +
+                                       (test::binaryDir() / "bin" / "clm3d").string() +
+                                       " demo --real --out " + (dir / "demo").string());
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("franck.mp4"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("file not found"), std::string::npos) << result.output;
+  // Nothing was started: no heads, no project.
+  EXPECT_FALSE(std::filesystem::exists(dir / "demo" / "heads"));
+}
+
 }  // namespace
 }  // namespace clm3d
