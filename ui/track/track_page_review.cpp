@@ -60,6 +60,14 @@ bool TrackPage::loadTrack(const fs::path& csv) {
     if (table.landmarkCount <= 0) {
       throw InputError(csv.string() + ": no landmark columns (x_1, y_1, ...)");
     }
+    // Another scheme would replace the ground truth and with it the hand-corrected keyframes.
+    const GroundTruthSet& truth = session_.truth();
+    if (truth.keyframeCount() > 0 && table.landmarkCount != truth.table.landmarkCount) {
+      throw InputError(csv.string() + ": " + std::to_string(table.landmarkCount) +
+                       " landmarks, but the ground truth being corrected has " +
+                       std::to_string(truth.table.landmarkCount) +
+                       " (its keyframes would be lost)");
+    }
     try {
       // Row i becomes frame i, frames the file lacks come back without points.
       track = GroundTruthSet::fromTrack(table, session_.video().frameCount).table;

@@ -199,6 +199,20 @@ class TrackReviewTest : public QObject {
     QVERIFY2(message.contains("longer-tracks.csv") && message.contains("sequence"),
              qPrintable(message));
 
+    // Another landmark count would replace the corrected keyframes: refused too.
+    const fs::path fewer = temp_.path() / "three-points.csv";
+    TrackTable three = truth_;
+    three.landmarkCount = 3;
+    for (TrackRow& row : three.rows) {
+      row.points = Eigen::Matrix2Xd(row.points.leftCols(3));
+      row.visibility.clear();
+    }
+    writeTrackTable(fewer, three);
+    test::expectErrorDialog(&message);
+    QVERIFY(!page_->loadTrack(fewer));
+    QVERIFY2(message.contains("three-points.csv") && message.contains("keyframes"),
+             qPrintable(message));
+
     // Nothing was lost: the track, the keyframe, the history, the unsaved state.
     QCOMPARE(page_->tracksCsv(), shiftedTrack_);
     QCOMPARE(page_->session().track().rows.size(), trackBefore.rows.size());
