@@ -286,7 +286,7 @@ RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
   real.tracks = project_layout::tracksFile(args.out, real.video, real.model);
   fs::create_directories(real.tracks.parent_path());
   TrackTable tracks;
-  DecileProgress trackProgress = stderrProgress("tracking franck.mp4");
+  DecileProgress trackProgress = stderrProgress("franck.mp4");
   const TrackSummary tracked =
       trackVideo(real.video, model, tracking, tracks, {}, trackProgress.callback());
   writeTrackTable(real.tracks, tracks);
