@@ -79,16 +79,18 @@ bool belongsTo(const Project& project, const fs::path& file, const fs::path& vid
 
 }  // namespace
 
+fs::path videoOf(const Project& project, const fs::path& file) {
+  for (const fs::path& video : project.videos) {
+    if (belongsTo(project, file, video)) return project.resolve(video);
+  }
+  return {};
+}
+
 std::vector<TrackFileEntry> trackFilesOf(const Project& project, const fs::path& video) {
   std::vector<TrackFileEntry> entries;
   const auto add = [&](const std::vector<fs::path>& files, bool groundTruth) {
     for (const fs::path& file : files) {
-      bool mine = belongsTo(project, file, video);
-      if (!mine) {
-        bool someVideo = false;
-        for (const fs::path& other : project.videos) someVideo |= belongsTo(project, file, other);
-        mine = !someVideo;
-      }
+      const bool mine = belongsTo(project, file, video) || videoOf(project, file).empty();
       if (mine) entries.push_back({project.resolve(file), groundTruth});
     }
   };

@@ -53,4 +53,8 @@ struct TrackFileEntry {
 std::vector<TrackFileEntry> trackFilesOf(const Project& project,
                                          const std::filesystem::path& video);
 
+// The first of the project's videos that `file` (a track or ground truth) belongs to by the rule
+// above, or an empty path when it belongs to none.
+std::filesystem::path videoOf(const Project& project, const std::filesystem::path& file);
+
 }  // namespace clm3d

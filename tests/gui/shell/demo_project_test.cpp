@@ -15,6 +15,7 @@
 #include "tests/gui/support/gui_test_support.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/evaluate/evaluate_page.hpp"
+#include "ui/evaluate/evaluation_inputs.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/track/track_page.hpp"
 #if __has_include(<QVTKOpenGLNativeWidget.h>)
@@ -48,7 +49,14 @@ class DemoProjectTest : public QObject {
                 "--out", QString::fromStdString(out.string())});
     QVERIFY(demo.waitForFinished(300000));
     QVERIFY2(demo.exitCode() == 0, demo.readAll().constData());
-    const Project written = loadProject(out);
+    Project written = loadProject(out);
+    // As after `clm3d demo --real`: another video with its own track (a copy of the demo's), which
+    // must not be scored against the test sequence's truth.
+    const fs::path otherTrack = out / "tracks" / "franck-real.csv";
+    fs::copy_file(written.tracks.at(0), otherTrack);
+    written.videos.push_back(temp.path() / "videos" / "franck.mp4");
+    written.tracks.push_back(otherTrack);
+    saveProject(written);
 
     MainWindow window;
     window.resize(1280, 800);
@@ -75,6 +83,8 @@ class DemoProjectTest : public QObject {
 
     // Evaluate page: the evaluation runs by itself and is shown.
     QVERIFY(test::waitUntil([&] { return evaluate->report() != nullptr; }, 60000));
+    QCOMPARE(evaluate->inputs().checkedPredictions().size(), std::size_t{1});
+    QCOMPARE(evaluate->inputs().checkedPredictions()[0], written.tracks.at(0));
     QCOMPARE(evaluate->report()->sequences.size(), std::size_t{1});
     QVERIFY(evaluate->summaryTable()->rowCount() > 0);
   }

@@ -53,6 +53,10 @@ TEST(ProjectLayout, ListsTheTrackFilesOfEachVideo) {
   EXPECT_EQ(sequence[1].path, fs::path("/p/tracks/sequence-m1.csv"));
   EXPECT_EQ(sequence[2].path, fs::path("/elsewhere/mystery.csv"));
 
+  EXPECT_EQ(videoOf(project, "/p/tracks/walk-m2.csv"), fs::path("/p/videos/walk.mp4"));
+  EXPECT_EQ(videoOf(project, "/p/sequence/truth.csv"), fs::path("/p/sequence/sequence.avi"));
+  EXPECT_EQ(videoOf(project, "/elsewhere/mystery.csv"), fs::path());
+
   // A video stem that is only a prefix of another name does not take its files.
   project.videos.push_back("/p/videos/wal.mp4");
   const auto wal = trackFilesOf(project, "/p/videos/wal.mp4");
