@@ -58,16 +58,7 @@ std::string formatManifest(const DatasetManifest& manifest, const fs::path& fold
     }
     top["procedural"] = std::move(procedural);
   }
-  const AugmentationSettings& a = manifest.augmentation;
-  top["augmentation"] = {{"background", backgroundName(a.background)},
-                         {"colour_jitter", a.colourJitter},
-                         {"white_balance", a.whiteBalance},
-                         {"blur_sigma_max", a.blurSigmaMax},
-                         {"noise_sd", a.noiseSd},
-                         {"jpeg_quality_min", a.jpegQualityMin},
-                         {"light_angle_max", a.lightAngleMaxDeg},
-                         {"shadows", a.shadows},
-                         {"probability", a.probability}};
+  top["augmentation"] = json::parse(augmentationJson(manifest.augmentation));
   return top.dump(2) + "\n";
 }
 
