@@ -25,6 +25,7 @@
 #include "core/track/ground_truth.hpp"
 #include "core/video/video_reader.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
+#include "tests/gui/track/track_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/frame_view.hpp"
@@ -69,21 +70,7 @@ class TrackPageTest : public QObject {
     project_ = createProject(temp_.path() / "project", "track-test");
     model_ = project_.folder / "models" / "fixture.clm3d";
     sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    test::runOffGuiThread([&] {
-      fs::create_directories(model_.parent_path());
-      saveModel(test::fitTestModel(), model_);
-      SequenceSettings settings;
-      settings.yawFromDeg = 0.0;
-      settings.yawToDeg = 2.0 * (kFrames - 1);
-      settings.stepDeg = 2.0;
-      settings.width = 320;
-      settings.height = 240;
-      settings.interOcularPixels = 56.0;
-      settings.supersample = 1;
-      const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-      writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings,
-                             SequenceSubject{}, sequence_);
-    });
+    test::writeTrackFixture(model_, sequence_, kFrames);
     project_.models.push_back(model_);
     project_.videos.push_back(sequence_.video);
     page_ = std::make_unique<TrackPage>();

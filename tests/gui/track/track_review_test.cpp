@@ -17,6 +17,7 @@
 #include "core/project/project_layout.hpp"
 #include "core/track/track_table.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
+#include "tests/gui/track/track_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/compared_points.hpp"
@@ -73,21 +74,7 @@ class TrackReviewTest : public QObject {
     project_ = createProject(temp_.path() / "project", "review-test");
     model_ = project_layout::modelFile(project_.folder, "fixture");
     sequence_ = SequenceFiles::inFolder(project_.folder / "sequence");
-    test::runOffGuiThread([&] {
-      fs::create_directories(model_.parent_path());
-      saveModel(test::fitTestModel(), model_);
-      SequenceSettings settings;
-      settings.yawFromDeg = 0.0;
-      settings.yawToDeg = 2.0 * (kFrames - 1);
-      settings.stepDeg = 2.0;
-      settings.width = 320;
-      settings.height = 240;
-      settings.interOcularPixels = 56.0;
-      settings.supersample = 1;
-      const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-      writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings,
-                             SequenceSubject{}, sequence_);
-    });
+    test::writeTrackFixture(model_, sequence_, kFrames);
     truth_ = readTrackTable(sequence_.truth);
     QCOMPARE(static_cast<int>(truth_.rows.size()), kFrames);
     // A track made elsewhere (by `clm3d track`, or another model), in the project's layout.
