@@ -117,9 +117,10 @@ TEST(SynthCli, BadYawRangeIsAUsageErrorNamingTheOption) {
 TEST(SynthCli, MissingMeshExitsOneNamingTheFile) {
   const test::TempDir dir;
   const fs::path mesh = dir / "absent.obj";
-  const auto result =
-      test::runClm3d("synth --mesh " + mesh.string() + " --landmarks " +
-                     (dir / "absent.ljson").string() + " --out " + (dir / "seq").string());
+  // Real landmarks (core reads them before the mesh), an absent mesh.
+  const auto result = test::runClm3d("synth --mesh " + mesh.string() + " --landmarks " +
+                                     test::fixturePath("james/james.thesis25.ljson").string() +
+                                     " --out " + (dir / "seq").string());
   EXPECT_EQ(result.exitCode, 1) << result.output;
   EXPECT_TRUE(contains(result.output, mesh.string())) << result.output;
   EXPECT_FALSE(fs::exists(dir / "seq"));
