@@ -14,12 +14,7 @@ namespace clm3d {
 namespace {
 
 void BM_InverseStep(benchmark::State& state, const std::string& name, bool newTemplates) {
-  test::SyntheticOptions options;
-  options.landmarks = 25;
-  options.modes = 20;
-  options.patchSize = 20;
-  options.alphaMask = true;
-  const auto s = test::makeSyntheticProblem(options);
+  const auto s = test::makeSyntheticProblem(test::modelSizedOptions());
   auto optimiser = makeOptimiser(name);
   Eigen::VectorXd p = s->truth;
   optimiser->step(*s->problem, p);  // sizes its buffers

@@ -99,12 +99,7 @@ TEST(GaussNewtonOptimiser, ShapePriorPullsTheShapeTowardsTheMean) {
 
 TEST(InverseOptimisers, StepAllocatesNothingAfterTheFirstCall) {
   if (!CLM3D_COUNT_MALLOC) GTEST_SKIP() << "malloc is not counted in this build (sanitizer)";
-  test::SyntheticOptions options;
-  options.landmarks = 25;
-  options.modes = 20;
-  options.patchSize = 20;
-  options.alphaMask = true;
-  const auto s = test::makeSyntheticProblem(options);
+  const auto s = test::makeSyntheticProblem(test::modelSizedOptions());
   // The counter works: an allocation while counting is seen.
   mallocCalls = 0;
   counting = true;
