@@ -18,7 +18,8 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || [[ $seconds -lt 1 ]]; then
   exit 2
 fi
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-targets=(fuzz_pts fuzz_ljson fuzz_landmark_csv fuzz_scheme_json fuzz_model_file fuzz_project)
+targets=(fuzz_pts fuzz_ljson fuzz_landmark_csv fuzz_scheme_json fuzz_model_file fuzz_project
+  fuzz_manifest fuzz_tracks_csv)
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/clm3d-fuzz.XXXXXX")
 failed=0

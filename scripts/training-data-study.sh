@@ -212,55 +212,31 @@ train_seconds() { sed -n 's/^wall-clock: \([0-9]*\) s$/\1/p' "$L/train-$1.log" 2
 # ---------------------------------------------------------------------------------------------
 # Test sequences of each held-out scan. The eval needs the true eye centres (the normalisation
 # pair); a scan without them (Lee Perry-Smith's eyes are closed) gets them as the midpoint of each
-# eye's corners, written to OUT/seq/NAME.eval.ljson for the test only.
-eval_landmarks() {  # eval_landmarks NAME -> path of landmarks (mm) with eye centres
-  local src=$JAMES_LM scale=1
-  if [[ $1 != james ]]; then src=$LPS_LM; scale=$LPS_SCALE; fi
+# eye's corners, written to OUT/seq/NAME.eval.ljson for the test only, in the file's units
+# (clm3d synth --scale turns mesh and landmarks into millimetres as training does).
+eval_landmarks() {  # eval_landmarks NAME -> path of landmarks with eye centres
+  local src=$JAMES_LM
+  [[ $1 != james ]] && src=$LPS_LM
   local out=$S/$1.eval.ljson
-  [[ -f $out ]] || "$PYTHON" - "$src" "$out" "$scale" <<'EOF'
+  [[ -f $out ]] || "$PYTHON" - "$src" "$out" <<'EOF'
 import json, sys
 doc = json.load(open(sys.argv[1]))
-scale = float(sys.argv[3])
-p = [None if q[0] is None else [v * scale for v in q] for q in doc["landmarks"]["points"]]
+p = doc["landmarks"]["points"]
 # thesis25, 0-based: 7 left eye centre (corners 1 outer, 8 inner); 10 right (2 outer, 9 inner)
 for centre, (a, b) in ((7, (1, 8)), (10, (2, 9))):
-    if p[centre] is None:
+    if p[centre][0] is None:
         p[centre] = [(p[a][k] + p[b][k]) / 2 for k in range(3)]
-doc["landmarks"]["points"] = p
 json.dump(doc, open(sys.argv[2], "w"), indent=1)
 EOF
   echo "$out"
 }
 
-# The held-out scan's mesh in millimetres, for clm3d synth: james as it is; Lee Perry-Smith's
-# vertices multiplied by LPS_SCALE into OUT/seq/leeperrysmith-mm/ (material and texture linked).
-mm_mesh() {  # mm_mesh NAME -> path
-  [[ $1 == james ]] && { echo "$JAMES_OBJ"; return; }
-  local dir=$S/leeperrysmith-mm
-  if [[ ! -f $dir/leeperrysmith.obj ]]; then
-    mkdir -p "$dir"
-    ln -sf "$(dirname "$LPS_OBJ")/leeperrysmith.mtl" "$(dirname "$LPS_OBJ")/Map-COL.jpg" "$dir/"
-    "$PYTHON" - "$LPS_OBJ" "$dir/leeperrysmith.obj" "$LPS_SCALE" <<'EOF'
-import sys
-scale = float(sys.argv[3])
-with open(sys.argv[1]) as f, open(sys.argv[2] + ".tmp", "w") as out:
-    for line in f:
-        if line.startswith("v "):
-            x, y, z = (float(v) * scale for v in line.split()[1:4])
-            line = f"v {x:.6f} {y:.6f} {z:.6f}\n"
-        out.write(line)
-import os
-os.replace(sys.argv[2] + ".tmp", sys.argv[2])
-EOF
-  fi
-  echo "$dir/leeperrysmith.obj"
-}
-
 synth() {  # synth NAME SCAN YAWRANGE
-  local name=$1 scan=$2 range=$3
+  local name=$1 scan=$2 range=$3 mesh=$JAMES_OBJ scale=1
+  [[ $scan != james ]] && { mesh=$LPS_OBJ; scale=$LPS_SCALE; }
   [[ -f $S/$name/truth.csv ]] && return 0
   log "synth $name"
-  timed "$L/synth-$name.log" "$CLM3D" synth --mesh "$(mm_mesh "$scan")" \
+  timed "$L/synth-$name.log" "$CLM3D" synth --mesh "$mesh" --scale "$scale" \
     --landmarks "$(eval_landmarks "$scan")" --yaw-range="$range" --step "$STEP" --out "$S/$name"
 }
 

@@ -12,15 +12,12 @@
 #include <string>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/scan_options.hpp"
 #include "core/common/error.hpp"
-#include "core/dataset/axis_name.hpp"
 #include "core/dataset/ict_textured.hpp"
 #include "core/dataset/training_subjects.hpp"
-#include "core/geometry/camera.hpp"
-#include "core/geometry/pose.hpp"
 #include "core/mesh/mesh_export.hpp"
-#include "core/render/framing.hpp"
-#include "core/render/offscreen_renderer.hpp"
+#include "core/render/view_tiles.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/scheme/scheme.hpp"
 #include "core/viz/contact_sheet.hpp"
@@ -49,15 +46,7 @@ std::vector<cv::Mat> renderViews(const TexturedMesh& mesh, int size) {
   for (const auto& p : mesh.positions) {
     if (p.norm() < 110.0F) face.positions.push_back(p);
   }
-  OffscreenRenderer renderer(mesh, RenderOptions{2});
-  std::vector<cv::Mat> tiles;
-  for (const double yaw : {0.0, 40.0}) {
-    const Camera camera = Camera::fromVerticalFov(size, size, 20.0);
-    Pose pose = Pose::fromDegrees(0.0, yaw, 0.0);
-    pose.translation = frameMesh(face, pose, camera, 0.9);
-    tiles.push_back(renderer.render(pose, camera).bgra);
-  }
-  return tiles;
+  return renderTilesFramedOn(mesh, face, {{0.0, 0.0}, {0.0, 40.0}}, size, 0.9);
 }
 
 void printResiduals(const char* what, const std::vector<double>& residuals) {
@@ -78,23 +67,8 @@ void printResiduals(const char* what, const std::vector<double>& residuals) {
 
 void runIctTexture(const IctTextureArgs& args) {
   const Scheme& scheme = Scheme::thesis25();
-  for (const auto& [option, value] :
-       {std::pair{"--up", args.up}, std::pair{"--front", args.front}}) {
-    if (!axisFromName(value)) {
-      throw CLI::ValidationError(option,
-                                 "expected an axis such as +y, -z or x, got '" + value + "'");
-    }
-  }
-  if (axisFromName(args.up)->dot(*axisFromName(args.front)) != 0.0) {
-    throw CLI::ValidationError("--up/--front", "the axes must be perpendicular");
-  }
-  ScanSource source;
-  source.mesh = args.scan;
-  source.landmarks = args.landmarks;
-  source.subject = args.scan.stem().string();
-  source.up = args.up;
-  source.front = args.front;
-  source.scale = args.scale;
+  const ScanSource source =
+      scanFromOptions(args.scan, args.landmarks, args.up, args.front, args.scale);
   const TexturedSubject scan = loadScanSubject(source, scheme);
   const std::vector<int> indices =
       readLandmarkVertexTable(args.vertices, scheme.name(), scheme.size());

@@ -1,6 +1,7 @@
 // clm3d render: draws a textured mesh offscreen at a given head pose, framed automatically, and
 // writes the image (transparent background), optionally the projected landmarks, the depth map
-// and an overlay of the landmarks. All work is done by core (mesh, render, scheme, geometry).
+// and an overlay of the landmarks. All work is done by core (mesh, render, scheme, geometry,
+// dataset/model_frame).
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,13 @@
 
 #include "app/commands/commands.hpp"
 #include "core/common/error.hpp"
+#include "core/dataset/axis_name.hpp"
+#include "core/dataset/model_frame.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
 #include "core/render/framing.hpp"
 #include "core/render/offscreen_renderer.hpp"
-#include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 #include "core/viz/landmark_overlay.hpp"
@@ -52,48 +54,28 @@ struct RenderArgs {
   fs::path overlay;
 };
 
-// "+y", "-z", "x" -> unit vector in the file's coordinates.
+// "+y", "-z", "x" -> unit vector in the file's coordinates (core's axis names).
 Eigen::Vector3d parseAxis(const std::string& text, const std::string& option) {
-  std::string s = text;
-  double sign = 1.0;
-  if (!s.empty() && (s[0] == '+' || s[0] == '-')) {
-    sign = s[0] == '-' ? -1.0 : 1.0;
-    s = s.substr(1);
-  }
-  if (s == "x" || s == "X") return sign * Eigen::Vector3d::UnitX();
-  if (s == "y" || s == "Y") return sign * Eigen::Vector3d::UnitY();
-  if (s == "z" || s == "Z") return sign * Eigen::Vector3d::UnitZ();
+  if (const auto axis = axisFromName(text)) return *axis;
   throw CLI::ValidationError(option, "expected an axis such as +y, -z or x, got '" + text + "'");
 }
 
 struct Landmarks {
   LandmarkSet points;
   const Scheme* scheme = nullptr;
-  std::optional<Eigen::Vector3d> landmarkOne;  // thesis landmark 1, between the eyes
-  std::optional<Eigen::Vector3d> leftEye;      // thesis landmarks 8 and 11, the eye centres
-  std::optional<Eigen::Vector3d> rightEye;
 };
 
 Landmarks readModelLandmarks(const fs::path& path) {
   Landmarks result;
   result.points = readLandmarks(path);
   if (result.points.dims() != 3) throwInputError(path, "expected 3D landmarks (x, y, z)");
-  LandmarkSet thesis;
   if (result.points.size() == Scheme::thesis25().size()) {
     result.scheme = &Scheme::thesis25();
-    thesis = result.points;
   } else if (result.points.size() == Scheme::ibug68().size()) {
     result.scheme = &Scheme::ibug68();
-    thesis = ibug68ToThesis25(result.points);
   } else {
     throwInputError(path, "has " + std::to_string(result.points.size()) +
                               " points; expected 25 (thesis25) or 68 (ibug68)");
-  }
-  if (thesis.has(0)) result.landmarkOne = thesis.point(0);
-  const auto [left, right] = Scheme::thesis25().normalisationPair();  // eye centres
-  if (thesis.has(left) && thesis.has(right)) {
-    result.leftEye = thesis.point(left);
-    result.rightEye = thesis.point(right);
   }
   return result;
 }
@@ -109,26 +91,18 @@ void runRender(const RenderArgs& args) {
   std::optional<Landmarks> landmarks;
   if (!args.landmarks.empty()) landmarks = readModelLandmarks(args.landmarks);
 
-  // To the model convention (+x subject's left, +y up, +z out of the face), turning about
-  // landmark 1 when known, else about the centre of the bounding box.
+  // To the model convention (+x subject's left, +y up, +z out of the face) as core puts any mesh
+  // there (core/dataset/model_frame): turning about landmark 1 when known, else about the centre
+  // of the bounding box; levelled on the eyes with --orient auto when the landmarks give them.
   const Eigen::Vector3d up = parseAxis(args.up, "--up");
   const Eigen::Vector3d front = parseAxis(args.front, "--front");
   if (up.dot(front) != 0.0) throw CLI::ValidationError("--up/--front", "the axes must differ");
-  const bool level = args.orient == "auto" && landmarks && landmarks->leftEye;
-  const Eigen::Matrix3d rotation =
-      level ? eyeLevelRotation(*landmarks->leftEye, *landmarks->rightEye, up)
-            : axesToModelRotation(up, front);
-  const Eigen::Vector3d centre = landmarks && landmarks->landmarkOne
-                                     ? *landmarks->landmarkOne
-                                     : Eigen::Vector3d(mesh.bounds().center().cast<double>());
-  transformMesh(mesh, rotation, -(rotation * centre));
-  if (landmarks) {
-    for (int i = 0; i < landmarks->points.size(); ++i) {
-      if (landmarks->points.has(i)) {
-        landmarks->points.set(i, Eigen::Vector3d(rotation * (landmarks->points.point(i) - centre)));
-      }
-    }
-  }
+  bool level = false;
+  const ModelFrame frame = viewingFrame(
+      landmarks ? &landmarks->points : nullptr, landmarks ? landmarks->scheme : nullptr, up, front,
+      args.orient == "auto", Eigen::Vector3d(mesh.bounds().center().cast<double>()), level);
+  transformMesh(mesh, frame.rotation, -(frame.rotation * frame.origin));
+  if (landmarks) landmarks->points = applyFrame(frame, landmarks->points);
 
   Camera camera = Camera::fromVerticalFov(args.size, args.size, args.fov);
   Pose pose = Pose::fromDegrees(args.pitch, args.yaw, args.roll);
@@ -178,7 +152,7 @@ void runRender(const RenderArgs& args) {
     std::cout << "landmarks: " << projected.presentCount() << " projected, " << hidden
               << " hidden at this pose\n";
   }
-  if (level) std::cout << "orientation: levelled on the eye centres of the landmarks\n";
+  if (level) std::cout << "orientation: levelled on the eyes of the landmarks\n";
   std::cout << "rendered " << args.mesh.filename().string() << " (" << mesh.vertexCount()
             << " vertices) at pitch " << args.pitch << ", yaw " << args.yaw << ", roll "
             << args.roll << " degrees, " << -pose.translation.z() << " mm away, to "

@@ -2,6 +2,7 @@
 // and LJSON, and optionally a contact sheet of each head from the thesis's 15 training views, so
 // a person can check at a glance that they look like faces.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -10,9 +11,8 @@
 
 #include "app/commands/commands.hpp"
 #include "core/common/error.hpp"
-#include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_export.hpp"
-#include "core/render/offscreen_renderer.hpp"
+#include "core/render/view_tiles.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/viz/contact_sheet.hpp"
@@ -22,6 +22,8 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+const Eigen::Vector3d kHeadPivot(0.0, -45.0, -60.0);  // about the middle of the head and neck
 
 struct SynthHeadArgs {
   std::uint64_t seed = 1;
@@ -33,29 +35,6 @@ struct SynthHeadArgs {
   fs::path contactSheet;
   int tileSize = 160;
 };
-
-// The head from yaw -60..60 x pitch -30..30 (rows by pitch), framed on the whole head.
-std::vector<cv::Mat> renderTrainingViews(const SynthHead& head, int size) {
-  const Eigen::Vector3d pivot(0.0, -45.0, -60.0);  // about the middle of the head and neck
-  double radius = 0.0;
-  for (const auto& p : head.mesh.positions) {
-    radius = std::max(radius, (p.cast<double>() - pivot).norm());
-  }
-  OffscreenRenderer renderer(head.mesh, RenderOptions{2});
-  std::vector<cv::Mat> tiles;
-  for (double pitch : {-30.0, 0.0, 30.0}) {
-    for (double yaw : {-60.0, -30.0, 0.0, 30.0, 60.0}) {
-      Camera camera = Camera::fromVerticalFov(size, size, 20.0);
-      Pose pose = Pose::fromDegrees(pitch, yaw, 0.0);
-      const double distance = -distanceToFit(radius, camera, 1.1);
-      camera = Camera::fromVerticalFov(size, size, 20.0, distance - radius - 10.0,
-                                       distance + radius + 10.0);
-      pose.translation = Eigen::Vector3d(0.0, 0.0, -distance) - pose.rotation() * pivot;
-      tiles.push_back(renderer.render(pose, camera).bgra);
-    }
-  }
-  return tiles;
-}
 
 // "smile,neutral" -> {"smile", "neutral"}.
 std::vector<std::string> splitNames(const std::string& text) {
@@ -80,6 +59,7 @@ void runSynthHead(const SynthHeadArgs& args) {
   fs::create_directories(args.out);
   std::vector<cv::Mat> tiles;
   std::vector<std::string> captions;
+  const std::vector<ViewAngles> views = trainingViewAngles();
   for (int i = 0; i < args.count; ++i) {
     const std::uint64_t seed = args.seed + static_cast<std::uint64_t>(i);
     const std::size_t which = static_cast<std::size_t>(i) % expressions.size();
@@ -90,12 +70,14 @@ void runSynthHead(const SynthHeadArgs& args) {
     std::cout << stem.string() << ".obj: " << head.mesh.triangleCount() << " triangles, "
               << names[which] << '\n';
     if (!args.contactSheet.empty()) {
-      for (cv::Mat& tile : renderTrainingViews(head, args.tileSize)) tiles.push_back(tile);
-      for (int pitch : {-30, 0, 30}) {
-        for (int yaw : {-60, -30, 0, 30, 60}) {
-          captions.push_back("#" + std::to_string(seed) + " y" + std::to_string(yaw) + " p" +
-                             std::to_string(pitch));
-        }
+      // Framed on the whole head, turned about the middle of the head and neck.
+      for (cv::Mat& tile : renderTilesAboutPivot(head.mesh, views, args.tileSize, kHeadPivot)) {
+        tiles.push_back(tile);
+      }
+      for (const ViewAngles& view : views) {
+        captions.push_back("#" + std::to_string(seed) + " y" +
+                           std::to_string(std::lround(view.yawDeg)) + " p" +
+                           std::to_string(std::lround(view.pitchDeg)));
       }
     }
   }

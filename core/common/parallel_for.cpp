@@ -15,7 +15,8 @@ int workerCount(int count, int threads) {
   return std::clamp(wanted, 1, std::max(1, count));
 }
 
-void parallelFor(int count, int threads, const std::function<void(int)>& body) {
+void parallelFor(int count, int threads, const std::function<void(int)>& body,
+                 const CancelToken* cancel) {
   if (count <= 0) return;
   std::atomic<int> next{0};
   std::atomic<bool> stop{false};
@@ -23,6 +24,10 @@ void parallelFor(int count, int threads, const std::function<void(int)>& body) {
   std::exception_ptr error;
   const auto worker = [&] {
     for (int i = next++; i < count && !stop; i = next++) {
+      if (cancel && cancel->cancelled()) {
+        stop = true;
+        return;
+      }
       try {
         body(i);
       } catch (...) {
@@ -41,6 +46,7 @@ void parallelFor(int count, int threads, const std::function<void(int)>& body) {
     for (std::thread& thread : pool) thread.join();
   }
   if (error) std::rethrow_exception(error);
+  if (cancel) cancel->throwIfCancelled();
 }
 
 }  // namespace clm3d

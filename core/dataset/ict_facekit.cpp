@@ -175,7 +175,7 @@ std::vector<int> readLandmarkVertexTable(const fs::path& path, const std::string
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // also out_of_range (huge numbers)
     throwInputError(path, std::string("not valid JSON: ") + e.what());
   }
   if (!root.is_object()) throwInputError(path, "expected a JSON object");

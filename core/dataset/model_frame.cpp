@@ -28,6 +28,17 @@ std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> eyeLevelPoints(
   return std::nullopt;
 }
 
+namespace {
+
+// The landmarks in thesis25 order when the scheme has its points (thesis25 or ibug68).
+std::optional<LandmarkSet> inThesisOrder(const LandmarkSet& landmarks, const Scheme& scheme) {
+  if (scheme.name() == "thesis25" && landmarks.size() == 25) return landmarks;
+  if (scheme.name() == "ibug68" && landmarks.size() == 68) return ibug68ToThesis25(landmarks);
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme& scheme,
                                      const Eigen::Vector3d& up, const Eigen::Vector3d& front,
                                      bool levelEyes, std::string& why) {
@@ -35,9 +46,7 @@ std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme&
     why = "expected 3D landmarks (x, y, z)";
     return std::nullopt;
   }
-  std::optional<LandmarkSet> thesis;
-  if (scheme.name() == "thesis25" && landmarks.size() == 25) thesis = landmarks;
-  if (scheme.name() == "ibug68" && landmarks.size() == 68) thesis = ibug68ToThesis25(landmarks);
+  const std::optional<LandmarkSet> thesis = inThesisOrder(landmarks, scheme);
 
   ModelFrame frame;
   const LandmarkSet& reference = thesis ? *thesis : landmarks;
@@ -66,6 +75,25 @@ std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme&
   } catch (const Error& e) {
     why = e.what();
     return std::nullopt;
+  }
+  return frame;
+}
+
+ModelFrame viewingFrame(const LandmarkSet* landmarks, const Scheme* scheme,
+                        const Eigen::Vector3d& up, const Eigen::Vector3d& front, bool levelEyes,
+                        const Eigen::Vector3d& fallbackOrigin, bool& levelled) {
+  ModelFrame frame;
+  frame.rotation = axesToModelRotation(up, front);
+  frame.origin = fallbackOrigin;
+  levelled = false;
+  if (landmarks == nullptr || scheme == nullptr || landmarks->dims() != 3) return frame;
+  const std::optional<LandmarkSet> thesis = inThesisOrder(*landmarks, *scheme);
+  const LandmarkSet& reference = thesis ? *thesis : *landmarks;
+  if (reference.size() > 0 && reference.has(0)) frame.origin = reference.point(0);
+  if (!levelEyes || !thesis) return frame;
+  if (const auto eyes = eyeLevelPoints(*thesis)) {
+    frame.rotation = eyeLevelRotation(eyes->first, eyes->second, up);
+    levelled = true;
   }
   return frame;
 }

@@ -33,6 +33,15 @@ std::optional<ModelFrame> modelFrame(const LandmarkSet& landmarks, const Scheme&
                                      const Eigen::Vector3d& up, const Eigen::Vector3d& front,
                                      bool levelEyes, std::string& why);
 
+// The frame for looking at any mesh (clm3d render), which never fails for want of landmarks:
+// levelled on the eyes (eyeLevelPoints) when `levelEyes` and the landmarks give them, else the
+// file's axes; the origin at landmark 1 when present, else `fallbackOrigin` (e.g. the centre of the
+// mesh's bounding box). `landmarks` and `scheme` may be null (a mesh without landmarks). Sets
+// `levelled` to whether the eyes were used. Throws Error if the eyes lie along `up`.
+ModelFrame viewingFrame(const LandmarkSet* landmarks, const Scheme* scheme,
+                        const Eigen::Vector3d& up, const Eigen::Vector3d& front, bool levelEyes,
+                        const Eigen::Vector3d& fallbackOrigin, bool& levelled);
+
 // Every present point through frame.apply.
 LandmarkSet applyFrame(const ModelFrame& frame, const LandmarkSet& landmarks);
 

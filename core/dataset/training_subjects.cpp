@@ -1,14 +1,13 @@
 #include "core/dataset/training_subjects.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
-#include <thread>
 
 #include "core/common/error.hpp"
+#include "core/common/parallel_for.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/ict_facekit.hpp"
 #include "core/dataset/ict_textured.hpp"
@@ -80,50 +79,40 @@ TexturedSubject makeMakeHuman(const MakeHumanAssets& assets, std::uint64_t seed,
   return subject;
 }
 
-// Runs jobs[i] into results[i] on up to `threads` threads; rethrows the error of the lowest failed
-// index (so which error is reported does not depend on timing), or Cancelled.
+// Runs jobs[i] into results[i] on up to `threads` threads (core/common's pool); rethrows the error
+// of the lowest failed index (so which error is reported does not depend on timing), or Cancelled.
 void runJobs(const std::vector<std::function<TexturedSubject()>>& jobs,
              std::vector<TexturedSubject>& results, int threads, const ProgressCallback& progress,
              const CancelToken* cancel) {
   results.assign(jobs.size(), {});
   std::vector<std::exception_ptr> errors(jobs.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
   std::mutex progressMutex;
   std::size_t done = 0;
-  auto worker = [&] {
-    for (;;) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= jobs.size() || stop.load()) return;
-      if (cancel && cancel->cancelled()) {
-        stop = true;
-        return;
-      }
-      try {
-        results[i] = jobs[i]();
-      } catch (...) {
-        errors[i] = std::current_exception();
-        stop = true;
-        return;
-      }
-      if (progress) {
-        std::lock_guard lock(progressMutex);
-        ++done;
-        progress(static_cast<double>(done) / static_cast<double>(jobs.size()),
-                 "loading training subjects");
-      }
+  try {
+    parallelFor(
+        static_cast<int>(jobs.size()), threads,
+        [&](int index) {
+          const auto i = static_cast<std::size_t>(index);
+          try {
+            results[i] = jobs[i]();
+          } catch (...) {
+            errors[i] = std::current_exception();
+            throw;
+          }
+          if (progress) {
+            const std::lock_guard lock(progressMutex);
+            ++done;
+            progress(static_cast<double>(done) / static_cast<double>(jobs.size()),
+                     "loading training subjects");
+          }
+        },
+        cancel);
+  } catch (...) {
+    for (const auto& error : errors) {
+      if (error) std::rethrow_exception(error);
     }
-  };
-  int count = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
-  count = std::clamp(count, 1, std::max(1, static_cast<int>(jobs.size())));
-  std::vector<std::jthread> pool;
-  for (int t = 1; t < count; ++t) pool.emplace_back(worker);
-  worker();
-  pool.clear();  // joins
-  for (const auto& error : errors) {
-    if (error) std::rethrow_exception(error);
+    throw;
   }
-  if (cancel) cancel->throwIfCancelled();
 }
 
 }  // namespace
@@ -195,6 +184,11 @@ std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifes
 
 TexturedSubject loadScanSubject(const ScanSource& scan, const Scheme& scheme) {
   return loadScan(scan, scheme);
+}
+
+TexturedSubject makeProceduralSubject(std::uint64_t seed, const std::string& expression,
+                                      const ProceduralSource& source) {
+  return makeProcedural(seed, expression, source);
 }
 
 }  // namespace clm3d

@@ -29,10 +29,10 @@ struct TexturedSubject {
 // in the order listed, then each MakeHuman entry identity by identity ("makehuman/SEED/EXPRESSION",
 // seed = seed_offset + i, each read of the MakeHuman data shared by the entry's identities), then
 // each ict_textured entry texture by texture ("ict/TEXTURE/K"; the model read and each texture
-// baked once per call, docs/texture-transfer.md). The result does not depend on `threads`. Scans are turned from their file
-// axes (up/front) into model axes, or, with level_eyes (the default), so that the line between the
-// eye centres is the +x axis; then moved so that landmark 1 is the origin. Throws InputError naming
-// the data file that is wrong, Cancelled when `cancel` fires.
+// baked once per call, docs/texture-transfer.md). The result does not depend on `threads`. Scans
+// are turned from their file axes (up/front) into model axes, or, with level_eyes (the default), so
+// that the line between the eye centres is the +x axis; then moved so that landmark 1 is the
+// origin. Throws InputError naming the data file that is wrong, Cancelled when `cancel` fires.
 std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifest, int threads,
                                                   const ProgressCallback& progress = {},
                                                   const CancelToken* cancel = nullptr);
@@ -40,6 +40,12 @@ std::vector<TexturedSubject> loadTexturedSubjects(const DatasetManifest& manifes
 // One scan as loadTexturedSubjects loads it (file units to mm, turned into model axes, landmark 1
 // at the origin), e.g. to register a template onto it (clm3d ict-texture).
 TexturedSubject loadScanSubject(const ScanSource& scan, const Scheme& scheme);
+
+// One procedural head (seed, expression preset) as loadTexturedSubjects generates it from a
+// procedural entry with `source`'s texture size and mesh step (its seeds and expressions unused),
+// e.g. for one synthetic test sequence (clm3d synth --head-seed).
+TexturedSubject makeProceduralSubject(std::uint64_t seed, const std::string& expression,
+                                      const ProceduralSource& source);
 
 // Shape-only 3D landmark sets from the manifest's ICT-FaceKit sources (in order, each
 // `identities` samples), in the same coordinates as the textured subjects (mm, +y up, +z front,

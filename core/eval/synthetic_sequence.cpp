@@ -415,6 +415,7 @@ SequenceSummary writeSyntheticSequence(const TexturedMesh& mesh, const LandmarkS
     subjectJson["kind"] = "scan";
     subjectJson["mesh"] = subject.mesh;
     subjectJson["landmarks"] = subject.landmarks;
+    if (subject.scale != 1.0) subjectJson["scale"] = subject.scale;
   }
   json["subject"] = subjectJson;
   json["scheme"] = scheme.name();

@@ -69,6 +69,7 @@ struct SequenceSettings {
 struct SequenceSubject {
   std::string mesh;  // scan: mesh and landmark files as given; empty for a procedural head
   std::string landmarks;
+  double scale = 1.0;                     // scan: file units to mm (the manifest's scale)
   std::optional<std::uint64_t> headSeed;  // procedural head (core/synth/synth_head.hpp)
   std::string expression;                 // its expression preset
   double faceStepDegrees = 0.0;           // its SynthOptions

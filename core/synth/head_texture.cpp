@@ -1,12 +1,11 @@
 #include "core/synth/head_texture.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <numbers>
-#include <thread>
 #include <vector>
 
+#include "core/common/parallel_for.hpp"
 #include "core/synth/synth_math.hpp"
 #include "core/synth/value_noise.hpp"
 
@@ -249,15 +248,7 @@ cv::Mat paintHeadTexture(const HeadShape& head, const EarShape& ear, const Angle
   };
   // Texels are independent, so rows are shared among a few threads (the result does not depend
   // on how many).
-  const int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1U, 4U));
-  std::atomic<int> next{0};
-  const auto work = [&] {
-    for (int row = next++; row < size; row = next++) paintRow(row);
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& thread : pool) thread.join();
+  parallelFor(size, std::min(4, workerCount(size, 0)), paintRow);
   return texture;
 }
 

@@ -1,5 +1,6 @@
 // clm3d synth end to end: a procedural head's sequence writes the video, the truth, the visibility
-// table and the description; a scan written by synth-head goes through the --mesh path; bad ranges,
+// table and the description; a scan written by synth-head goes through the --mesh path, and
+// --scale scales it as training does; bad ranges,
 // missing files and conflicting options fail with clear messages and the documented exit codes.
 #include <gtest/gtest.h>
 
@@ -69,6 +70,38 @@ TEST(SynthCli, ScanFromSynthHeadWithNegativeRangeAndMp4) {
   EXPECT_TRUE(contains(json, "head-4.obj")) << json;
 }
 
+// --scale turns file units into millimetres as a manifest's scans[i].scale does (core's
+// loadScanSubject): the head twice as large stands twice as far away for the same face size, and
+// the description records the scale.
+TEST(SynthCli, ScaleMultipliesTheScanAsTrainingDoes) {
+  const test::TempDir dir;
+  const auto head = test::runClm3d("synth-head --seed 5 --texture-size 256 --face-step 2 --out " +
+                                   dir.path().string());
+  ASSERT_EQ(head.exitCode, 0) << head.output;
+  const auto run = [&](const std::string& name, const std::string& scale) {
+    const auto result = test::runClm3d(
+        "synth --mesh " + (dir / "head-5.obj").string() + " --landmarks " +
+        (dir / "head-5.ljson").string() + " --yaw-range 0 --scale " + scale + " --out " +
+        (dir / name).string() + " --size 160x120 --face-size 30 --supersample 1");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    return readTrackTable(dir / name / "truth.csv");
+  };
+  const TrackTable one = run("one", "1");
+  const TrackTable two = run("two", "2");
+  ASSERT_EQ(one.rows.size(), 1U);
+  ASSERT_EQ(two.rows.size(), 1U);
+  ASSERT_TRUE(one.rows[0].pose && two.rows[0].pose);
+  EXPECT_NEAR(two.rows[0].pose->translation.z() / one.rows[0].pose->translation.z(), 2.0, 1e-3);
+  EXPECT_NEAR((two.rows[0].points - one.rows[0].points).cwiseAbs().maxCoeff(), 0.0, 0.05);
+  EXPECT_TRUE(contains(test::readFile(dir / "two" / "sequence.json"), "\"scale\": 2"));
+  EXPECT_FALSE(contains(test::readFile(dir / "one" / "sequence.json"), "\"scale\""));
+  const auto bad = test::runClm3d("synth --mesh " + (dir / "head-5.obj").string() +
+                                  " --landmarks " + (dir / "head-5.ljson").string() +
+                                  " --scale 0 --out " + (dir / "bad").string());
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_TRUE(contains(bad.output, "--scale")) << bad.output;
+}
+
 TEST(SynthCli, BadYawRangeIsAUsageErrorNamingTheOption) {
   const test::TempDir dir;
   for (const char* range : {"0:abc", "0:500", "sixty"}) {
@@ -84,9 +117,10 @@ TEST(SynthCli, BadYawRangeIsAUsageErrorNamingTheOption) {
 TEST(SynthCli, MissingMeshExitsOneNamingTheFile) {
   const test::TempDir dir;
   const fs::path mesh = dir / "absent.obj";
-  const auto result =
-      test::runClm3d("synth --mesh " + mesh.string() + " --landmarks " +
-                     (dir / "absent.ljson").string() + " --out " + (dir / "seq").string());
+  // Real landmarks (core reads them before the mesh), an absent mesh.
+  const auto result = test::runClm3d("synth --mesh " + mesh.string() + " --landmarks " +
+                                     test::fixturePath("james/james.thesis25.ljson").string() +
+                                     " --out " + (dir / "seq").string());
   EXPECT_EQ(result.exitCode, 1) << result.output;
   EXPECT_TRUE(contains(result.output, mesh.string())) << result.output;
   EXPECT_FALSE(fs::exists(dir / "seq"));

@@ -65,16 +65,17 @@ class StudioLaunchTest : public QObject {
   }
 
   // Opening a project (reading it, handing it to the pages, the title, the recent list) must not
-  // stall the GUI thread over 100 ms; asserted for the shell with light pages. The stall with the
-  // real pages is printed, for an empty project and, with CLM3D_STUDIO_MEASURE_PROJECT=DIR (e.g. a
-  // `clm3d demo` folder), for that project: it is the pages' work (docs/studio.md).
+  // stall the GUI thread over 100 ms; the shell with light pages is held to test::kStallBoundMs.
+  // The stall with the real pages is printed, for an empty project and, with
+  // CLM3D_STUDIO_MEASURE_PROJECT=DIR (e.g. a `clm3d demo` folder), for that project: it is the
+  // pages' work (docs/studio.md).
   void openingAProjectDoesNotStallTheGuiThread() {
     test::TempFolder temp;
     createProject(temp.path() / "empty");
     const QString empty = toQString(temp.path() / "empty");
     const double shell = longestStallOpening(empty, MainWindow::PageSet::None);
     qInfo("longest GUI stall opening an empty project, shell only: %.1f ms", shell);
-    QVERIFY2(shell < 100.0, qPrintable(QString("stall %1 ms").arg(shell)));
+    QVERIFY2(shell < test::kStallBoundMs, qPrintable(QString("stall %1 ms").arg(shell)));
     qInfo("longest GUI stall opening an empty project with this studio's pages: %.1f ms",
           longestStallOpening(empty, MainWindow::PageSet::Standard));
     const QString measured = qEnvironmentVariable("CLM3D_STUDIO_MEASURE_PROJECT");

@@ -15,6 +15,13 @@
 
 namespace clm3d::test {
 
+// The bound a GUI test puts on a stall of the GUI thread (or one piece of GUI-thread work). It is
+// generous on purpose: it catches work that belongs on a worker thread (a training step or a video
+// decode blocking the loop for seconds), not the scheduling of a loaded shared machine. The
+// measured stalls are printed (qInfo) and the figures the studio is designed for (100 ms, 20 ms a
+// frame) are in docs/studio*.md, never asserted.
+inline constexpr double kStallBoundMs = 1000.0;
+
 // Ticks every 5 ms on the thread it lives on; the longest gap between ticks, minus the period, is
 // how long the event loop could not run.
 class StallWatchdog : public QObject {

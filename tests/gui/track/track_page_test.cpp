@@ -127,7 +127,7 @@ class TrackPageTest : public QObject {
     watchdog.stop();
     qInfo("tracking: longest GUI-thread stall %.1f ms over %d ticks", watchdog.longestStallMs(),
           watchdog.ticks());
-    QVERIFY2(watchdog.longestStallMs() < 100.0,
+    QVERIFY2(watchdog.longestStallMs() < test::kStallBoundMs,
              qPrintable(QString("stall %1 ms").arg(watchdog.longestStallMs())));
     const TrackTable& rows = page_->session().track();
     QCOMPARE(static_cast<int>(rows.rows.size()), kFrames);
@@ -158,12 +158,12 @@ class TrackPageTest : public QObject {
           page_->longestOverlayMs(), page_->longestDecodeMs(), watchdog.longestStallMs());
     QVERIFY(page_->longestOverlayMs() > 0.0);  // the patches were drawn
     // The page is built for < 20 ms per frame on the GUI thread (typically 0.5 ms overlay, 2 ms
-    // decode here); the assertions leave room for a loaded CI machine.
-    QVERIFY2(page_->longestOverlayMs() < 50.0,
+    // decode here, printed above); the assertions only catch work that belongs elsewhere.
+    QVERIFY2(page_->longestOverlayMs() < test::kStallBoundMs,
              qPrintable(QString("overlay %1 ms").arg(page_->longestOverlayMs())));
-    QVERIFY2(page_->longestDecodeMs() < 50.0,
+    QVERIFY2(page_->longestDecodeMs() < test::kStallBoundMs,
              qPrintable(QString("decode %1 ms").arg(page_->longestDecodeMs())));
-    QVERIFY(watchdog.longestStallMs() < 100.0);
+    QVERIFY(watchdog.longestStallMs() < test::kStallBoundMs);
     // The patch shortcut toggles them.
     auto* patches = page_->findChild<QCheckBox*>("patchesCheck");
     QVERIFY(patches->isChecked());
@@ -258,7 +258,7 @@ class TrackPageTest : public QObject {
     QVERIFY(waitForJob());
     watchdog.stop();
     qInfo("re-tracking: longest GUI-thread stall %.1f ms", watchdog.longestStallMs());
-    QVERIFY(watchdog.longestStallMs() < 100.0);
+    QVERIFY(watchdog.longestStallMs() < test::kStallBoundMs);
     const TrackTable& track = page_->session().track();
     QCOMPARE(static_cast<int>(track.rows.size()), kFrames);
     for (int f = 0; f < kFrames; ++f) QCOMPARE(track.rows[static_cast<std::size_t>(f)].frame, f);

@@ -1,5 +1,6 @@
 // The worker pool: every index runs exactly once whatever the thread count, the first exception
-// reaches the caller after the workers joined, and an empty range runs nothing.
+// reaches the caller after the workers joined, a cancelled token stops the workers taking indices
+// and reaches the caller as Cancelled, and an empty range runs nothing.
 #include "core/common/parallel_for.hpp"
 
 #include <gtest/gtest.h>
@@ -34,6 +35,39 @@ TEST(ParallelFor, TheFirstExceptionReachesTheCaller) {
   std::atomic<int> one{0};
   EXPECT_THROW(parallelFor(1000, 1, failAt10(one)), std::runtime_error);
   EXPECT_EQ(one.load(), 11);  // no index is taken after the failure
+}
+
+TEST(ParallelFor, CancellingStopsTakingIndicesAndThrowsCancelled) {
+  for (const int threads : {1, 2}) {
+    CancelToken cancel;
+    std::atomic<int> ran{0};
+    EXPECT_THROW(parallelFor(
+                     1000, threads,
+                     [&](int i) {
+                       ++ran;
+                       if (i == 10) cancel.cancel();
+                     },
+                     &cancel),
+                 Cancelled);
+    // Indices already taken when the token fired still run, one per worker at most.
+    EXPECT_LE(ran.load(), 11 + threads) << threads << " threads";
+  }
+  // A body's own exception wins over the cancellation it raced with.
+  CancelToken cancel;
+  EXPECT_THROW(parallelFor(
+                   100, 1,
+                   [&](int) {
+                     cancel.cancel();
+                     throw std::runtime_error("body failed");
+                   },
+                   &cancel),
+               std::runtime_error);
+  // A token that never fires changes nothing.
+  CancelToken idle;
+  std::atomic<int> all{0};
+  parallelFor(
+      100, 2, [&](int) { ++all; }, &idle);
+  EXPECT_EQ(all.load(), 100);
 }
 
 TEST(ParallelFor, AnEmptyRangeRunsNothing) {

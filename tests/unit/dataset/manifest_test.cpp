@@ -118,6 +118,7 @@ TEST_F(ManifestTest, EveryErrorNamesTheFileAndTheField) {
   const std::string scan = kScan;
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"{", "not valid JSON"},
+      {"33e333e3e", "not valid JSON"},  // a number too large for a double (found by fuzz_manifest)
       {"[]", "field the manifest: expected an object"},
       {R"({"scans": [)" + scan + "]}", "field version: missing"},
       {R"({"version": 2, "scans": [)" + scan + "]}", "field version: unsupported"},

@@ -1,15 +1,14 @@
 // Tests of the gauss-newton optimiser (inverse additive SSE, thesis A.3): registration, the inverse
 // sign (a step from a perturbed start heads for the truth), fixed pitch and yaw of the planar
-// model, the shape prior's direction, no heap allocation inside step() (both inverse optimisers),
-// the cost of a step, and recovery of a perturbed pose and shape of a rendered head.
+// model, the shape prior's direction, no heap allocation inside step() (both inverse optimisers)
+// and recovery of a perturbed pose and shape of a rendered head. The cost of a step is a benchmark
+// (tests/bench/inverse_step_bench.cpp), not a test.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
-#include <ctime>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -100,12 +99,7 @@ TEST(GaussNewtonOptimiser, ShapePriorPullsTheShapeTowardsTheMean) {
 
 TEST(InverseOptimisers, StepAllocatesNothingAfterTheFirstCall) {
   if (!CLM3D_COUNT_MALLOC) GTEST_SKIP() << "malloc is not counted in this build (sanitizer)";
-  test::SyntheticOptions options;
-  options.landmarks = 25;
-  options.modes = 20;
-  options.patchSize = 20;
-  options.alphaMask = true;
-  const auto s = test::makeSyntheticProblem(options);
+  const auto s = test::makeSyntheticProblem(test::modelSizedOptions());
   // The counter works: an allocation while counting is seen.
   mallocCalls = 0;
   counting = true;
@@ -130,54 +124,6 @@ TEST(InverseOptimisers, StepAllocatesNothingAfterTheFirstCall) {
       s->problem->clamp(p);
     }
     EXPECT_EQ(calls, 0) << name;
-  }
-}
-
-// CPU time of this thread (the machines running the tests are shared), microseconds.
-double threadMicroseconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) * 1e6 + static_cast<double>(now.tv_nsec) * 1e-3;
-}
-
-TEST(InverseOptimisers, StepCost25LandmarksOf20x20) {
-  test::SyntheticOptions options;
-  options.landmarks = 25;
-  options.modes = 20;
-  options.patchSize = 20;
-  options.alphaMask = true;
-  const auto s = test::makeSyntheticProblem(options);
-  for (const char* name : {"gauss-newton", "fastncc"}) {
-    auto optimiser = makeOptimiser(name);
-    Eigen::VectorXd p = s->truth;
-    optimiser->step(*s->problem, p);
-#if defined(NDEBUG) && !CLM3D_SANITIZED
-    const int runs = 200;
-#else
-    const int runs = 10;  // debug and sanitizer builds: only that it runs
-#endif
-    double withRefresh = 0.0;
-    double cached = 0.0;
-    for (int i = 0; i < runs; ++i) {
-      Eigen::VectorXd q = s->truth;
-      q[kParamTx] += 0.5;
-      s->problem->synthesiseTemplates(q);
-      const double t0 = threadMicroseconds();
-      optimiser->step(*s->problem, q);
-      const double t1 = threadMicroseconds();
-      optimiser->step(*s->problem, q);
-      const double t2 = threadMicroseconds();
-      withRefresh += t1 - t0;
-      cached += t2 - t1;
-    }
-    withRefresh /= runs;
-    cached /= runs;
-    std::cout << "[ " << name << " ] step, 25 landmarks of 20x20, 26 parameters: " << withRefresh
-              << " us with new templates, " << cached << " us with cached derivatives (CPU)\n";
-    RecordProperty(std::string(name) + "-step-us", std::to_string(withRefresh));
-#if defined(NDEBUG) && !CLM3D_SANITIZED
-    EXPECT_LT(withRefresh, 2000.0) << name;  // generous: shared CI machines
-#endif
   }
 }
 

@@ -89,6 +89,17 @@ struct SyntheticOptions {
   unsigned seed = 7;
 };
 
+// The size of a real model's search: 25 landmarks of 20x20, 20 shape modes (26 parameters),
+// alpha masks. The inverse optimisers' allocation test and step benchmark use it.
+inline SyntheticOptions modelSizedOptions() {
+  SyntheticOptions options;
+  options.landmarks = 25;
+  options.modes = 20;
+  options.patchSize = 20;
+  options.alphaMask = true;
+  return options;
+}
+
 inline std::unique_ptr<SyntheticProblem> makeSyntheticProblem(const SyntheticOptions& options) {
   auto s = std::make_unique<SyntheticProblem>();
   const bool planar = options.planar;

@@ -3,6 +3,7 @@
 // thread counts, cancellation, and the report pictures.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <memory>
 
 #include "core/common/error.hpp"
@@ -170,13 +171,13 @@ TEST(Train, DeterministicWhateverTheThreadCount) {
 
 TEST(Train, CancelFromTheProgressCallbackStopsTraining) {
   CancelToken token;
-  int calls = 0;
+  std::atomic<int> calls{0};  // progress is called from the training's worker threads
   const auto progress = [&](double fraction, std::string_view) {
     ++calls;
     if (fraction > 0.2) token.cancel();
   };
   EXPECT_THROW(trainModel(smallInput(), smallSettings(), progress, &token), Cancelled);
-  EXPECT_GT(calls, 0);
+  EXPECT_GT(calls.load(), 0);
 }
 
 TEST(Train, SingleViewBaselineHasOneFrontalViewAnd2DShape) {

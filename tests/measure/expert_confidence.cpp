@@ -8,9 +8,8 @@
 // fixture's), CLM3D_MEASURE_HEAD_SEED the head (default 9001), CLM3D_MEASURE_SMALL=1 renders
 // 320x240 frames with 56 pixels between the eyes instead of 640x480 with 90. The documented runs:
 // the fixture with seed 9001, the fixture with seed 101 (its held-out head) and SMALL=1, and a
-// 15-view model trained on 805 photos with seed 9001. Run:
-//   CLM3D_MEASURE_MODEL=model.clm3d bin/clm3d_test_unit_track --gtest_also_run_disabled_tests
-//     --gtest_filter='*MeasureExpertConfidence*'
+// 15-view model trained on 805 photos with seed 9001. Not in ctest (it asserts nothing). Run:
+//   CLM3D_MEASURE_MODEL=model.clm3d scripts/measure.sh expert-confidence
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,7 +49,7 @@ void printQuantiles(const std::string& name, std::vector<double> values) {
   std::cout << " ]\n";
 }
 
-TEST(Tracker, DISABLED_MeasureExpertConfidence) {
+TEST(Measure, ExpertConfidence) {
   const char* path = std::getenv("CLM3D_MEASURE_MODEL");
   const ClmModel model = path ? loadModel(path) : test::fitTestModel();
   const char* seed = std::getenv("CLM3D_MEASURE_HEAD_SEED");  // default 9001
