@@ -49,8 +49,9 @@ std::vector<std::string> taskCommand(const CLI::App& command) {
   if (error) throw Error("cannot find the clm3d program (/proc/self/exe): " + error.message());
   std::vector<std::string> words{self.string(), "batch"};
   for (const CLI::Option* option : command.get_options()) {
-    const std::string name = option->get_name();
-    if (option->count() == 0 || kSubmitOnly.count(name) > 0 || name.rfind("--", 0) != 0) continue;
+    if (option->count() == 0 || option->get_lnames().empty()) continue;  // not given, positional
+    const std::string name = "--" + option->get_lnames().front();
+    if (kSubmitOnly.count(name) > 0) continue;
     if (option->get_expected_min() == 0) {  // a flag
       words.push_back(name);
       continue;

@@ -110,6 +110,16 @@ BatchRow errorRow(const fs::path& input, std::string message, double seconds) {
   return row;
 }
 
+// Counts the rows' statuses into a summary's ok, noFace and errors.
+template <typename Summary>
+void tally(const std::vector<BatchRow>& rows, Summary& summary) {
+  for (const BatchRow& row : rows) {
+    summary.ok += row.status == ImageFitStatus::Ok ? 1 : 0;
+    summary.noFace += row.status == ImageFitStatus::NoFace ? 1 : 0;
+    summary.errors += row.status == ImageFitStatus::Error ? 1 : 0;
+  }
+}
+
 // ImageFitters for the worker threads: one per thread at a time, made on demand, kept for reuse.
 class FitterPool {
  public:
@@ -354,20 +364,9 @@ BatchRunSummary runBatch(const ClmModel& model, const BatchJob& job, const Batch
   });
 
   for (std::optional<BatchRow>& row : rows) {
-    if (!row) continue;  // cancelled before it finished
-    switch (row->status) {
-      case ImageFitStatus::Ok:
-        ++summary.ok;
-        break;
-      case ImageFitStatus::NoFace:
-        ++summary.noFace;
-        break;
-      case ImageFitStatus::Error:
-        ++summary.errors;
-        break;
-    }
-    summary.rows.push_back(std::move(*row));
+    if (row) summary.rows.push_back(std::move(*row));  // else cancelled before it finished
   }
+  tally(summary.rows, summary);
   const bool stopped = summary.rows.size() < items.size();
   // A shard's summary stands for all of its items (the merge counts on it): a stopped shard
   // writes none, so the merge reports it unfinished; a whole run keeps what it did.
@@ -424,11 +423,7 @@ BatchMergeSummary mergeBatchShards(const fs::path& outDir) {
     }
     for (std::size_t j = 0; j < rows.size(); ++j) merged.rows[positions[j]] = rows[j];
   }
-  for (const BatchRow& row : merged.rows) {
-    merged.ok += row.status == ImageFitStatus::Ok ? 1 : 0;
-    merged.noFace += row.status == ImageFitStatus::NoFace ? 1 : 0;
-    merged.errors += row.status == ImageFitStatus::Error ? 1 : 0;
-  }
+  tally(merged.rows, merged);
   merged.summaryCsv = outDir / "summary.csv";
   writeTextAtomically(merged.summaryCsv, formatBatchSummary(merged.rows));
   return merged;

@@ -47,18 +47,6 @@ std::vector<BatchRow> summaryOf(const fs::path& csv) {
   return parseBatchSummary(test::readFile(csv), csv.string());
 }
 
-// Output file name -> its bytes, over the outputs (not status/ or the summaries).
-std::map<std::string, std::string> outputsIn(const fs::path& folder) {
-  std::map<std::string, std::string> outputs;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name.rfind("summary", 0) != 0) {
-      outputs[name] = test::readFile(entry.path());
-    }
-  }
-  return outputs;
-}
-
 // The whole job on one thread, run once and shared by the tests that compare with it.
 const fs::path& wholeRun() {
   static const fs::path out = [] {
@@ -107,7 +95,7 @@ TEST(BatchCli, TwoThreadsWriteTheSameOutputsAsOneAndShowProgress) {
   EXPECT_TRUE(contains(result.output, "batch 7/7 ")) << result.output;
   EXPECT_TRUE(contains(result.output, ", ETA 0:00")) << result.output;
   EXPECT_TRUE(contains(result.output, "2 of 7 items failed")) << result.output;
-  EXPECT_EQ(outputsIn(out), outputsIn(wholeRun()));
+  EXPECT_EQ(test::batchOutputsIn(out), test::batchOutputsIn(wholeRun()));
   const auto one = summaryOf(wholeRun() / "summary.csv");
   const auto two = summaryOf(out / "summary.csv");
   ASSERT_EQ(one.size(), two.size());
@@ -142,7 +130,7 @@ TEST(BatchCli, ThreeShardsCoverEveryItemOnceAndMergeIntoTheWholeRun) {
     EXPECT_EQ(merged[i].frames, whole[i].frames);
     EXPECT_EQ(merged[i].error, whole[i].error);
   }
-  EXPECT_EQ(outputsIn(out), outputsIn(wholeRun()));
+  EXPECT_EQ(test::batchOutputsIn(out), test::batchOutputsIn(wholeRun()));
 
   // A missing shard is named.
   fs::remove(out / "summary-2-of-3.csv");

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <map>
 #include <string>
 
 #include "core/track/batch_run.hpp"
@@ -46,17 +45,6 @@ class LocalSlurm {
   std::string message_;
 };
 
-std::map<std::string, std::string> outputsIn(const fs::path& folder) {
-  std::map<std::string, std::string> outputs;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name.rfind("summary", 0) != 0) {
-      outputs[name] = test::readFile(entry.path());
-    }
-  }
-  return outputs;
-}
-
 TEST(BatchSlurm, AThreeTaskArrayMatchesASingleProcessRun) {
   test::TempDir dir;
   const test::BatchInputs made = test::makeBatchInputs(dir.path(), false);
@@ -80,7 +68,7 @@ TEST(BatchSlurm, AThreeTaskArrayMatchesASingleProcessRun) {
     EXPECT_TRUE(fs::exists(array / ("summary-" + std::to_string(task) + "-of-3.csv"))) << task;
     EXPECT_TRUE(fs::exists(array / "slurm" / ("task-" + std::to_string(task) + ".log"))) << task;
   }
-  EXPECT_EQ(outputsIn(array), outputsIn(single));
+  EXPECT_EQ(test::batchOutputsIn(array), test::batchOutputsIn(single));
   const auto whole = parseBatchSummary(test::readFile(single / "summary.csv"), "single");
   const auto merged = parseBatchSummary(test::readFile(array / "summary.csv"), "array");
   ASSERT_EQ(merged.size(), whole.size());

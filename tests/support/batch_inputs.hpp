@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "core/eval/synthetic_sequence.hpp"
@@ -57,6 +58,18 @@ inline BatchInputs makeBatchInputs(const std::filesystem::path& folder, bool bro
     writeFile(made.inputs / "g-broken.png", "this is text, not a PNG\n");
   }
   return made;
+}
+
+// Output file name -> its bytes, over a batch's outputs (not status/ or the summaries).
+inline std::map<std::string, std::string> batchOutputsIn(const std::filesystem::path& folder) {
+  std::map<std::string, std::string> outputs;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.rfind("summary", 0) != 0) {
+      outputs[name] = readFile(entry.path());
+    }
+  }
+  return outputs;
 }
 
 }  // namespace clm3d::test
