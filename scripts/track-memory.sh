@@ -7,7 +7,8 @@
 #
 #   scripts/track-memory.sh MODEL [FRAMES] [VIDEOS] [CLM3D]
 #
-# FRAMES defaults to 500, VIDEOS to 20 (10,000 frames), CLM3D to build/release/bin/clm3d.
+# FRAMES defaults to 500, VIDEOS to 20 (10,000 frames), CLM3D to build/release/bin/clm3d. VIDEO=F
+# chains that video instead of rendering one (FRAMES must then be its frame count).
 set -euo pipefail
 
 [ $# -ge 1 ] || {
@@ -22,11 +23,15 @@ clm3d=${4:-build/release/bin/clm3d}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # frontal -> -30 -> +30 -> frontal is 120 degrees.
-step=$(python3 -c "print(f'{120.0 / ($frames - 1):.6f}')")
-"$clm3d" synth --head-seed 7 --texture-size 512 --out "$work/seq" --yaw-range=-30:30 --sweep \
-  --step "$step" --size 320x240 --face-size 60 >/dev/null
+video=${VIDEO:-}
+if [ -z "$video" ]; then
+  step=$(python3 -c "print(f'{120.0 / ($frames - 1):.6f}')")
+  "$clm3d" synth --head-seed 7 --texture-size 512 --out "$work/seq" --yaw-range=-30:30 --sweep \
+    --step "$step" --size 320x240 --face-size 60 >/dev/null
+  video=$work/seq/sequence.avi
+fi
 mkdir "$work/job"
-for i in $(seq -w 1 "$videos"); do ln -s "$work/seq/sequence.avi" "$work/job/part$i.avi"; done
+for i in $(seq -w 1 "$videos"); do ln -s "$(realpath "$video")" "$work/job/part$i.avi"; done
 
 "$clm3d" batch --threads 1 --model "$model" --input "$work/job" --out-dir "$work/out" \
   2>"$work/progress.txt" >"$work/summary.txt" &
@@ -52,6 +57,10 @@ if not after:
     sys.exit("no sample after frame 1000")
 first, last = after[0], after[-1]
 peak = max(s[1] for s in after)
+last_per_count = {}
+for frames, rss in samples:
+    last_per_count[frames] = rss
+print("frames: MiB " + ", ".join(f"{f}: {r / 1024:.1f}" for f, r in sorted(last_per_count.items())))
 print(f"after {first[0]} frames: {first[1] / 1024:.1f} MiB resident")
 print(f"after {last[0]} frames: {last[1] / 1024:.1f} MiB resident ({100.0 * (last[1] / first[1] - 1):+.1f}%)")
 print(f"peak from frame {first[0]} on: {peak / 1024:.1f} MiB ({100.0 * (peak / first[1] - 1):+.1f}%)")
