@@ -86,8 +86,9 @@ struct BatchRunSummary {
 // Leftover temporaries of a killed run (OUT/.NAME.tmp*) are removed first. Progress (thread-safe,
 // once per finished item) goes 0..1 over the items to run, its stage
 // "batch K/N NAME ok 1.2 s, ETA 0:35". When cancelled (checked before each item and during a
-// video) the running items stop without output, the summary of what is done is written and
-// Cancelled thrown. Throws InputError before any item for an output folder that is an input's
+// video) the running items stop without output, the summary of what is done is written (a
+// whole run's; a shard writes none, so that a merge cannot take it for complete) and Cancelled
+// thrown. Throws InputError before any item for an output folder that is an input's
 // folder or cannot be made, and when the summary cannot be written.
 BatchRunSummary runBatch(const ClmModel& model, const BatchJob& job, const BatchSettings& settings,
                          const ProgressCallback& progress = {},
