@@ -30,6 +30,7 @@
 #include "ui/track/frame_view.hpp"
 #include "ui/track/player_bar.hpp"
 #include "ui/track/review_overlay.hpp"
+#include "ui/track/review_panel.hpp"
 #include "ui/track/timeline_widget.hpp"
 #include "ui/track/track_jobs.hpp"
 #include "ui/track/truth_commands.hpp"
@@ -61,9 +62,9 @@ TrackPage::TrackPage(QWidget* parent)
     progress_->setFormat(stage + " %p%");
   });
   connect(runner_, &JobRunner::failed, this, [this](const QString& message) {
-    const QString what = job_ == Job::Export    ? tr("Exporting the overlay video failed")
-                         : job_ == Job::Retrack ? tr("Re-tracking failed")
-                                                : tr("Tracking failed");
+    const QString what = job_ == Job::Export ? tr("Exporting the overlay video failed")
+                         : job_ == Job::Retrack || job_ == Job::Loop ? tr("Re-tracking failed")
+                                                                     : tr("Tracking failed");
     showError(this, what, message);
   });
   connect(runner_, &JobRunner::cancelled, this,
@@ -171,6 +172,7 @@ void TrackPage::buildLayout() {
   truthLayout->addWidget(exportButton_);
   side->addWidget(review);
   side->addWidget(truthBox);
+  buildLoopControls(top, side);
   side->addStretch(1);
 
   auto* middle = new QHBoxLayout;
@@ -218,6 +220,7 @@ void TrackPage::buildLayout() {
     if (!session_.hasPoints(current_)) return;
     undo_.push(moveLandmarkCommand(session_, current_, index, Eigen::Vector2d(to.x(), to.y()),
                                    [this] { truthChanged(); }));
+    correctionMade(current_);
   });
 }
 
@@ -250,6 +253,8 @@ void TrackPage::setProject(Project* project) {
     job_ = Job::None;  // the queued end of a cancelled job has nothing left to take over
     trackOutcome_.reset();
     retrackOutcome_.reset();
+    loopOutcome_.reset();
+    pendingLoopFrame_ = -1;
     player_->setPlaying(false);
     undo_.clear();
     session_ = TrackSession{};
@@ -264,6 +269,11 @@ void TrackPage::setProject(Project* project) {
   }
   project_ = project;
   fillProjectLists();
+  loadProjectTrackerSettings();
+  if (project_ && !project_->trackerModel.empty() && modelPath_.empty() &&
+      fs::exists(project_->trackerModel)) {
+    openModel(project_->trackerModel);  // the model last chosen in this project
+  }
   if (project_ && !project_->models.empty() && modelPath_.empty())
     openModel(project_->models.front());
   // A project's first video is what the user opens first anyway (the demo's test sequence).
@@ -389,6 +399,7 @@ void TrackPage::openModel(const fs::path& model) {
   session_.setModel(model, nullptr);
   overlayFitter_.reset();
   if (project_ && project_->addUnique(project_->models, model)) emit projectModified();
+  rememberModel(model);
   fillProjectLists();
   updateControls();
 }
@@ -413,7 +424,7 @@ bool TrackPage::startTracking() {
   trackOutcome_ = std::make_shared<TrackOutcome>();
   job_ = Job::Track;
   runner_->start(tr("tracking"), trackJob(session_.video().path, modelPath_, session_.model(),
-                                          TrackerSettings{}, trackOutcome_));
+                                          trackerSettings_, trackOutcome_));
   updateControls();
   return true;
 }
@@ -429,7 +440,7 @@ bool TrackPage::retrackFromCurrentFrame() {
   retrackOutcome_ = std::make_shared<RetrackOutcome>();
   job_ = Job::Retrack;
   runner_->start(tr("re-tracking"),
-                 retrackJob(session_.video().path, session_.model(), TrackerSettings{}, current_,
+                 retrackJob(session_.video().path, session_.model(), trackerSettings_, current_,
                             session_.truth().table.rows[static_cast<std::size_t>(current_)].points,
                             retrackOutcome_));
   updateControls();
@@ -482,6 +493,8 @@ void TrackPage::onJobEnded() {
       saveTracks();
     }
     retrackOutcome_.reset();
+  } else if (job == Job::Loop) {
+    takeLoopOutcome();
   } else if (job == Job::Export && runner_->elapsedSeconds() >= 0 && fs::exists(exportPath_)) {
     emit statusMessage(tr("Overlay video written to %1").arg(qPath(exportPath_)));
   }
@@ -490,6 +503,7 @@ void TrackPage::onJobEnded() {
   refreshTimeline();
   showFrame();
   updateControls();
+  if (pendingLoopFrame_ >= 0 && !loopTimer_->isActive()) startPendingLoop();
 }
 
 void TrackPage::saveTracks() {
@@ -544,7 +558,7 @@ bool TrackPage::compareWith(const fs::path& reference) {
 }
 
 void TrackPage::toggleKeyframe() {
-  if (isBusy() || !session_.hasPoints(current_)) return;
+  if (editsBlocked() || !session_.hasPoints(current_)) return;
   undo_.push(toggleKeyframeCommand(session_, current_, [this] { truthChanged(); }));
 }
 
@@ -694,8 +708,10 @@ void TrackPage::updateControls() {
   cancelButton_->setEnabled(busy);
   videoCombo_->setEnabled(!busy);
   modelCombo_->setEnabled(!busy);
-  frameView_->setEditable(!busy);
-  keyframeButton_->setEnabled(!busy && points);
+  frameView_->setEditable(!editsBlocked());
+  keyframeButton_->setEnabled(!editsBlocked() && points);
+  review_->setEditable(!editsBlocked() && points, !busy && points);
+  settingsButton_->setEnabled(!busy);
   interpolateButton_->setEnabled(!busy && session_.truth().keyframeCount() >= 2);
   retrackButton_->setEnabled(!busy && tracked && points);
   saveButton_->setEnabled(!busy && session_.truth().table.landmarkCount > 0);

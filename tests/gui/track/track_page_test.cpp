@@ -25,7 +25,7 @@
 #include "core/track/ground_truth.hpp"
 #include "core/video/video_reader.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
-#include "tests/support/fit_fixture.hpp"
+#include "tests/gui/track/track_fixture.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/frame_view.hpp"
 #include "ui/track/player_bar.hpp"
@@ -37,22 +37,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kFrames = 16;
-
-// Runs `work` on a worker thread and waits: training and rendering use the offscreen renderer,
-// which must not run on the GUI thread.
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
 
 QString screenshotFolder() {
   return QProcessEnvironment::systemEnvironment().value("CLM3D_STUDIO_SCREENSHOTS");
@@ -83,23 +67,9 @@ class TrackPageTest : public QObject {
  private slots:
   void initTestCase() {
     project_ = createProject(temp_.path() / "project", "track-test");
-    model_ = project_.folder / "models" / "fixture.clm3d";
-    sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    runOffGuiThread([&] {
-      fs::create_directories(model_.parent_path());
-      saveModel(test::fitTestModel(), model_);
-      SequenceSettings settings;
-      settings.yawFromDeg = 0.0;
-      settings.yawToDeg = 2.0 * (kFrames - 1);
-      settings.stepDeg = 2.0;
-      settings.width = 320;
-      settings.height = 240;
-      settings.interOcularPixels = 56.0;
-      settings.supersample = 1;
-      const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-      writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings,
-                             SequenceSubject{}, sequence_);
-    });
+    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 2.0);
+    model_ = fixture.model;
+    sequence_ = fixture.sequence;
     project_.models.push_back(model_);
     project_.videos.push_back(sequence_.video);
     page_ = std::make_unique<TrackPage>();
@@ -110,6 +80,8 @@ class TrackPageTest : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(page_.get()));
     page_->setFocus();
     page_->setProject(&project_);
+    // Drags here are single edits; the re-track that follows them is correction_loop_test's.
+    page_->setLoopEnabled(false);
     QCOMPARE(page_->title(), QString("Track"));
   }
 
