@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addEvalPointsCommand(app);
   clm3d::cli::addPlotCommand(app);
   clm3d::cli::addDetectCommand(app);
+  clm3d::cli::addBatchCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -15,6 +15,7 @@ packages=(
   qtbase5-dev libqt5charts5-dev libqt5svg5-dev
   libvtk9-dev libvtk9-qt-dev
   xvfb xauth
+  slurm-wlm munge
 )
 
 missing=()

@@ -22,5 +22,6 @@ void addIctTextureCommand(CLI::App& root);
 void addEvalPointsCommand(CLI::App& root);
 void addPlotCommand(CLI::App& root);
 void addDetectCommand(CLI::App& root);
+void addBatchCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

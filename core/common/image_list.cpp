@@ -28,6 +28,13 @@ bool isImageFile(const fs::path& path) {
   return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
 }
 
+bool isVideoFile(const fs::path& path) {
+  static const std::vector<std::string> kExtensions{".mp4", ".avi", ".mov",
+                                                    ".mkv", ".m4v", ".webm"};
+  const std::string extension = lowerExtension(path);
+  return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
+}
+
 namespace {
 
 std::string trimmed(const std::string& line) {
@@ -37,21 +44,20 @@ std::string trimmed(const std::string& line) {
   return std::string(begin, end.base());
 }
 
-}  // namespace
-
-std::vector<fs::path> listImages(const fs::path& folderOrList) {
+std::vector<fs::path> listFiles(const fs::path& folderOrList, bool (*accept)(const fs::path&),
+                                const std::string& kinds) {
   std::error_code error;
   const fs::file_status status = fs::status(folderOrList, error);
   if (!fs::exists(status)) throwInputError(folderOrList, "no such folder or image list");
   std::vector<fs::path> images;
   if (fs::is_directory(status)) {
     for (const fs::directory_entry& entry : fs::directory_iterator(folderOrList, error)) {
-      if (isImageFile(entry.path()) && !entry.is_directory()) images.push_back(entry.path());
+      if (accept(entry.path()) && !entry.is_directory()) images.push_back(entry.path());
     }
     if (error) throwInputError(folderOrList, "cannot list the folder: " + error.message());
     std::sort(images.begin(), images.end());
     if (images.empty()) {
-      throwInputError(folderOrList, "no image (.jpg, .jpeg, .png, .ppm, .bmp) in the folder");
+      throwInputError(folderOrList, "no " + kinds + " in the folder");
     }
     return images;
   }
@@ -64,8 +70,20 @@ std::vector<fs::path> listImages(const fs::path& folderOrList) {
     const fs::path path(entry);
     images.push_back(path.is_absolute() ? path : base / path);
   }
-  if (images.empty()) throwInputError(folderOrList, "the image list names no image");
+  if (images.empty()) throwInputError(folderOrList, "the list names no file");
   return images;
+}
+
+}  // namespace
+
+std::vector<fs::path> listImages(const fs::path& folderOrList) {
+  return listFiles(folderOrList, isImageFile, "image (.jpg, .jpeg, .png, .ppm, .bmp)");
+}
+
+std::vector<fs::path> listImagesAndVideos(const fs::path& folderOrList) {
+  return listFiles(
+      folderOrList, [](const fs::path& path) { return isImageFile(path) || isVideoFile(path); },
+      "image (.jpg, .jpeg, .png, .ppm, .bmp) or video (.mp4, .avi, .mov, .mkv, .m4v, .webm)");
 }
 
 }  // namespace clm3d

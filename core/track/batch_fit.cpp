@@ -31,15 +31,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
-// Locale-independent fixed-point text; empty for NaN.
-std::string fixedCell(double value, int decimals) {
-  if (!std::isfinite(value)) return {};
-  char buffer[64];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, end) : std::string();
-}
-
 ImageFitOutcome failed(const fs::path& image, ImageFitStatus status, std::string message) {
   ImageFitOutcome outcome;
   outcome.image = image;
@@ -196,26 +187,42 @@ std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes) 
   return out.str();
 }
 
-BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
-                          const ImageFitSettings& settings, const ProgressCallback& progress,
-                          const CancelToken* cancel, const ImageFitCallback& onImage) {
+void prepareOutputFolder(const std::vector<fs::path>& inputs, const fs::path& outDir,
+                         const fs::path& initDir) {
   std::error_code error;
   // Points written into the images' own folder would replace the mark-ups beside them (LFPW keeps
   // STEM.pts next to STEM.jpg), and into the start folder the start points: refuse both.
-  for (const fs::path& image : job.images) {
+  for (const fs::path& image : inputs) {
     const fs::path folder = image.parent_path().empty() ? fs::path(".") : image.parent_path();
-    if (fs::equivalent(folder, job.outDir, error)) {
-      throwInputError(job.outDir, "is the folder of the images (" + image.filename().string() +
-                                      "): the points would overwrite files beside them; choose "
-                                      "another output folder");
+    if (fs::equivalent(folder, outDir, error)) {
+      throwInputError(outDir, "is the folder of the images (" + image.filename().string() +
+                                  "): the points would overwrite files beside them; choose "
+                                  "another output folder");
     }
   }
-  if (!job.initDir.empty() && fs::equivalent(job.initDir, job.outDir, error)) {
-    throwInputError(job.outDir, "is the folder of the start points; choose another output folder");
+  if (!initDir.empty() && fs::equivalent(initDir, outDir, error)) {
+    throwInputError(outDir, "is the folder of the start points; choose another output folder");
   }
   error.clear();
-  fs::create_directories(job.outDir, error);
-  if (error) throwInputError(job.outDir, "cannot create the folder: " + error.message());
+  fs::create_directories(outDir, error);
+  if (error) throwInputError(outDir, "cannot create the folder: " + error.message());
+}
+
+ImageFitOutcome fitBatchImage(ImageFitter& fitter, const fs::path& image, const fs::path& initDir,
+                              const fs::path& output) {
+  if (initDir.empty()) return fitter.fitFile(image, {}, output);
+  const std::string stem = image.stem().string();
+  const auto start = findLandmarkFile(initDir, stem);
+  return start ? fitter.fitFile(image, *start, output)
+               : failed(image, ImageFitStatus::Error,
+                        fileMessage(image, "no start points " + stem + ".pts, .ljson or .csv in " +
+                                               initDir.string()));
+}
+
+BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
+                          const ImageFitSettings& settings, const ProgressCallback& progress,
+                          const CancelToken* cancel, const ImageFitCallback& onImage) {
+  prepareOutputFolder(job.images, job.outDir, job.initDir);
   BatchFitSummary summary;
   summary.summaryCsv = job.outDir / "summary.csv";
   ImageFitter fitter(model, settings);
@@ -238,15 +245,9 @@ BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
           image, ImageFitStatus::Error,
           fileMessage(image, "has the same stem as " + first->second.string() +
                                  ", whose points are written to " + stem + job.pointsExtension));
-    } else if (!job.initDir.empty()) {
-      const auto start = findLandmarkFile(job.initDir, stem);
-      outcome =
-          start ? fitter.fitFile(image, *start, job.outDir / (stem + job.pointsExtension))
-                : failed(image, ImageFitStatus::Error,
-                         fileMessage(image, "no start points " + stem + ".pts, .ljson or .csv in " +
-                                                job.initDir.string()));
     } else {
-      outcome = fitter.fitFile(image, {}, job.outDir / (stem + job.pointsExtension));
+      outcome =
+          fitBatchImage(fitter, image, job.initDir, job.outDir / (stem + job.pointsExtension));
     }
     switch (outcome.status) {
       case ImageFitStatus::Ok:

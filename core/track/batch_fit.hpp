@@ -111,6 +111,18 @@ struct BatchFitSummary {
   std::filesystem::path summaryCsv;
 };
 
+// Refuses, with an InputError naming the output folder, an output folder that is the folder of one
+// of the inputs or the start-points folder (the outputs would overwrite the files there), and
+// creates it (an InputError when it cannot). fitImages and the batch runner (batch_run) check so.
+void prepareOutputFolder(const std::vector<std::filesystem::path>& inputs,
+                         const std::filesystem::path& outDir, const std::filesystem::path& initDir);
+
+// One image of a batch: fitFile from the detector (empty initDir) or from STEM.pts/.ljson/.csv in
+// initDir (an error outcome naming the image when there is none), the points written to `output`.
+ImageFitOutcome fitBatchImage(ImageFitter& fitter, const std::filesystem::path& image,
+                              const std::filesystem::path& initDir,
+                              const std::filesystem::path& output);
+
 // The summary table: a header "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,
 // iterations,converged,error" and one row per outcome. Milliseconds with 3 decimals, the
 // confidence with 6, view angles in degrees; empty cells where there is no value. A cell holding a
