@@ -36,6 +36,9 @@ struct TrackArgs {
   double motionPrediction = TrackerSettings{}.motionPrediction;
   double viewSearch = TrackerSettings{}.viewSearchConfidence;
   double viewSearchExpert = TrackerSettings{}.viewSearchExpertConfidence;
+  bool smooth = SmoothingSettings{}.enabled;
+  double smoothMinCutoff = SmoothingSettings{}.minCutoffHz;
+  double smoothBeta = SmoothingSettings{}.beta;
   bool quiet = false;
 };
 
@@ -50,6 +53,9 @@ void runTrack(const TrackArgs& args) {
   settings.motionPrediction = args.motionPrediction;
   settings.viewSearchConfidence = args.viewSearch;
   settings.viewSearchExpertConfidence = args.viewSearchExpert;
+  settings.smoothing.enabled = args.smooth;
+  settings.smoothing.minCutoffHz = args.smoothMinCutoff;
+  settings.smoothing.beta = args.smoothBeta;
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
@@ -155,6 +161,21 @@ void addTrackCommand(CLI::App& root) {
                    "is also searched from the neighbouring views (0 = never)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  command->add_flag("--smooth", args->smooth,
+                    "smooth the written points over time (one-euro filter; a failed or "
+                    "re-detected frame restarts it; docs/evaluation.md)");
+  command
+      ->add_option("--smooth-min-cutoff", args->smoothMinCutoff,
+                   "with --smooth: cutoff frequency of a still point in Hz (lower: less jitter, "
+                   "more lag)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 100.0));
+  command
+      ->add_option("--smooth-beta", args->smoothBeta,
+                   "with --smooth: cutoff added per eye distance per second of a point's speed "
+                   "(higher: less lag when moving)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1000.0));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   addFitOptions(*command, args->fit);
   command->callback([args] { runTrack(*args); });

@@ -9,11 +9,13 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/common/progress.hpp"
 #include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/track/track_smoother.hpp"
 #include "core/track/track_table.hpp"
 
 namespace clm3d {
@@ -60,6 +62,10 @@ struct TrackerSettings {
   // measurement as above), so 0.55 searches those. A higher value only costs time.
   double viewSearchExpertConfidence = 0.55;
   double viewSearchMargin = 0.02;  // on either scale
+  // Temporal smoothing of the written points (off by default). Only the rows' points are
+  // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
+  // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
+  SmoothingSettings smoothing;
 };
 
 // Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest
@@ -89,7 +95,8 @@ class Tracker {
   TrackStep track(const cv::Mat& frame, int index, double timestamp);
   // Forget the previous frame: the next frame starts from a detection.
   void reset();
-  // Start the next frame from this state (a hand-corrected frame, or --init points).
+  // Start the next frame from this state (a hand-corrected frame, or --init points). Both restart
+  // the smoother.
   void setState(const FitState& state, int view = -1);
   // Where the next frame's search starts: the last state, its pose moved on by the motion
   // prediction once two consecutive frames were tracked. Only valid while tracking (not lost).
@@ -118,6 +125,8 @@ class Tracker {
   std::optional<FitState> state_;
   std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction
   int view_ = -1;
+  PointSmoother smoother_;
+  std::pair<int, int> eyes_;  // the scheme's normalisation pair (parsed once)
 };
 
 struct TrackSummary {
