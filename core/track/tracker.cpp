@@ -41,6 +41,12 @@ std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& po
   return visibility;
 }
 
+double confidenceThreshold(const TrackerSettings& settings) {
+  return makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()
+             ? settings.minExpertConfidence
+             : settings.minConfidence;
+}
+
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
     : model_(&model),
       camera_(camera),

@@ -74,6 +74,11 @@ struct TrackerSettings {
 // lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
 std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
 
+// The confidence below which a frame fails under `settings`: minExpertConfidence when its
+// optimiser matches patch experts (rlms), minConfidence otherwise. The same scale as each
+// landmark's confidence, so the studio marks landmarks below it.
+double confidenceThreshold(const TrackerSettings& settings);
+
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
 const char* toString(TrackFailure failure);
