@@ -102,11 +102,27 @@ for tracks in "$OUT"/tracks/image_*.csv; do
     > "$OUT/tracks/$stem.eval.json" 2>/dev/null || true
 done
 
-# 6. franck.mp4: clm3d's track against dlib on every frame (no truth).
+# 6. franck.mp4: clm3d's track against dlib on every 10th frame (no truth): the frames as images
+# (clm3d frames), dlib on them, clm3d's points per frame (clm3d truth --pts), paired by file stem.
 FRANCK=$DATA/videos/franck.mp4
-if [[ -f $FRANCK && ! -f $OUT/tracks/franck.csv ]]; then
-  "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" --optimiser rlms \
-    --min-expert-confidence 0.45 \
-    --quiet > "$OUT/logs/track-franck.log" 2>&1 || true
+if [[ -f $FRANCK ]]; then
+  [[ -f $OUT/tracks/franck.csv ]] ||
+    "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" \
+      --optimiser rlms --quiet > "$OUT/logs/track-franck.log" 2>&1 || true
+  mkdir -p "$OUT/franck"
+  [[ -d $OUT/franck/frames ]] ||
+    "$CLM3D" frames --video "$FRANCK" --out "$OUT/franck/frames" --every 10 --quiet > /dev/null
+  [[ -d $OUT/franck/dlib ]] ||
+    "$PEER_DLIB" "$OUT"/franck/frames/*.png --out "$OUT/franck/dlib" > "$OUT/logs/dlib-franck.log"
+  "$CLM3D" truth --in "$OUT/tracks/franck.csv" --out "$OUT/franck/clm3d.csv" \
+    --pts "$OUT/franck/clm3d-pts" > /dev/null
+  echo "== franck.mp4: $(head -2 "$OUT/logs/track-franck.log" | tr '\n' ' ')"
+  echo "views chosen (frames per view index; clm3d info lists the views):"
+  view_column=$(head -1 "$OUT/tracks/franck.csv" | tr ',' '\n' | grep -nx view | cut -d: -f1)
+  tail -n +2 "$OUT/tracks/franck.csv" | cut -d, -f"$view_column" | sort -n | uniq -c | tr '\n' ' '
+  echo
+  printf '%-22s ' "agreement with dlib"
+  python3 "$SCORE" --truth "$OUT"/franck/dlib/*.pts --pred "$OUT/franck/clm3d-pts" --pred-scheme 25 |
+    grep -E "^all "
 fi
 echo "real-faces: results in $OUT"

@@ -36,7 +36,7 @@ ImageFitSettings imageFitSettings(const FitArgs& args) {
   settings.detector = args.fit.detectorKind();
   settings.verticalFovDeg = args.fit.fovDeg;
   settings.startOffset = args.startOffset;
-  settings.startOffsetSeed = args.fit.seed;
+  settings.startOffsetSeed = args.fit.seed();
   return settings;
 }
 

@@ -30,32 +30,14 @@ namespace fs = std::filesystem;
 
 struct TrackArgs {
   fs::path model, video, out, overlay, init;
-  FitOptions fit;
-  double minConfidence = TrackerSettings{}.minConfidence;
-  double minExpertConfidence = TrackerSettings{}.minExpertConfidence;
-  double motionPrediction = TrackerSettings{}.motionPrediction;
-  double viewSearch = TrackerSettings{}.viewSearchConfidence;
-  double viewSearchExpert = TrackerSettings{}.viewSearchExpertConfidence;
-  bool smooth = SmoothingSettings{}.enabled;
-  double smoothMinCutoff = SmoothingSettings{}.minCutoffHz;
-  double smoothBeta = SmoothingSettings{}.beta;
+  FitOptions fit;  // every tracker option (core/track/tracker_options.hpp)
   bool quiet = false;
 };
 
 void runTrack(const TrackArgs& args) {
   const ClmModel model = loadModel(args.model);
   const Scheme scheme = model.scheme();
-  TrackerSettings settings;
-  settings.fit = args.fit.settings();
-  settings.detector = args.fit.detectorKind();
-  settings.minConfidence = args.minConfidence;
-  settings.minExpertConfidence = args.minExpertConfidence;
-  settings.motionPrediction = args.motionPrediction;
-  settings.viewSearchConfidence = args.viewSearch;
-  settings.viewSearchExpertConfidence = args.viewSearchExpert;
-  settings.smoothing.enabled = args.smooth;
-  settings.smoothing.minCutoffHz = args.smoothMinCutoff;
-  settings.smoothing.beta = args.smoothBeta;
+  const TrackerSettings& settings = args.fit.tracker;
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
@@ -113,8 +95,8 @@ void runTrack(const TrackArgs& args) {
             << "%), " << summary.detections << " detections\n"
             << std::setprecision(2) << "fit time per frame: median " << summary.medianMilliseconds()
             << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
-            << args.fit.optimiser << ", "
-            << (args.fit.scales > 0 ? std::to_string(args.fit.scales) : std::string("all"))
+            << settings.fit.optimiser << ", "
+            << (settings.fit.scales > 0 ? std::to_string(settings.fit.scales) : std::string("all"))
             << " scales)\n"
             << "tracks: " << args.out.string() << '\n';
   if (overlay) std::cout << "overlay: " << args.overlay.string() << '\n';
@@ -132,51 +114,8 @@ void addTrackCommand(CLI::App& root) {
   command->add_option("--overlay", args->overlay,
                       "also write the video with the landmarks and patches drawn (.mp4, .avi)");
   command->add_option("--init", args->init, "start the first frame from these points");
-  command
-      ->add_option("--min-confidence", args->minConfidence,
-                   "mean NCC below which a frame counts as failed and the face is re-detected "
-                   "(template optimisers)")
-      ->capture_default_str();
-  command
-      ->add_option("--min-expert-confidence", args->minExpertConfidence,
-                   "the same for rlms: the patch experts' mean response (0..1) below which a "
-                   "frame counts as failed")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  command
-      ->add_option("--motion-prediction", args->motionPrediction,
-                   "share of the last frame-to-frame pose change each frame's start is moved on "
-                   "by (0 = start from the previous pose)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 2.0));
-  command
-      ->add_option("--view-search", args->viewSearch,
-                   "mean NCC below which a frame is also searched from the neighbouring views "
-                   "(0 = never; template optimisers)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  command
-      ->add_option("--view-search-expert", args->viewSearchExpert,
-                   "the same for rlms: the patch experts' mean response (0..1) below which a frame "
-                   "is also searched from the neighbouring views (0 = never)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  command->add_flag("--smooth", args->smooth,
-                    "smooth the written points over time (one-euro filter; a failed or "
-                    "re-detected frame restarts it; docs/evaluation.md)");
-  command
-      ->add_option("--smooth-min-cutoff", args->smoothMinCutoff,
-                   "with --smooth: cutoff frequency of a still point in Hz (lower: less jitter, "
-                   "more lag)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.01, 100.0));
-  command
-      ->add_option("--smooth-beta", args->smoothBeta,
-                   "with --smooth: cutoff added per eye distance per second of a point's speed "
-                   "(higher: less lag when moving)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1000.0));
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  addTrackerOptions(*command, args->fit.tracker, OptionScope::Track);
   addFitOptions(*command, args->fit);
   command->callback([args] { runTrack(*args); });
 }

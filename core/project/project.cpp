@@ -42,6 +42,45 @@ std::vector<fs::path> readList(const json& doc, const char* key, const Project& 
   return out;
 }
 
+// "tracker": {"model": PATH, "options": {NAME: VALUE}}; a value is a string, number or boolean and
+// is kept as the text the command line would take.
+void readTracker(const json& doc, Project& project, const fs::path& file) {
+  if (!doc.contains("tracker")) return;
+  const json& tracker = doc.at("tracker");
+  const auto bad = [&](const std::string& what) {
+    throw InputError(fileMessage(file, "\"tracker\" " + what));
+  };
+  if (!tracker.is_object()) bad("must be an object");
+  if (tracker.contains("model")) {
+    const json& model = tracker.at("model");
+    if (!model.is_string()) bad("\"model\" must be a path");
+    if (!model.get<std::string>().empty())
+      project.trackerModel = project.resolve(model.get<std::string>());
+  }
+  if (!tracker.contains("options")) return;
+  const json& options = tracker.at("options");
+  if (!options.is_object()) bad("\"options\" must be an object");
+  for (const auto& [name, value] : options.items()) {
+    if (value.is_string()) {
+      project.trackerOptions[name] = value.get<std::string>();
+    } else if (value.is_boolean()) {
+      project.trackerOptions[name] = value.get<bool>() ? "true" : "false";
+    } else if (value.is_number()) {
+      project.trackerOptions[name] = value.dump();
+    } else {
+      bad("option \"" + name + "\" must be a string, number or boolean");
+    }
+  }
+}
+
+// An option's text as JSON: a number or boolean when it reads as one, else a string.
+json optionValue(const std::string& text) {
+  if (text == "true" || text == "false") return text == "true";
+  const json parsed = json::parse(text, nullptr, false);
+  if (!parsed.is_discarded() && parsed.is_number()) return parsed;
+  return text;
+}
+
 }  // namespace
 
 fs::path Project::resolve(const fs::path& p) const {
@@ -96,6 +135,7 @@ Project parseProject(std::string_view text, const fs::path& folder, const fs::pa
   project.videos = readList(doc, "videos", project, file);
   project.tracks = readList(doc, "tracks", project, file);
   project.groundTruth = readList(doc, "ground_truth", project, file);
+  readTracker(doc, project, file);
   return project;
 }
 
@@ -116,6 +156,16 @@ void saveProject(const Project& project) {
   doc["videos"] = list(project.videos);
   doc["tracks"] = list(project.tracks);
   doc["ground_truth"] = list(project.groundTruth);
+  if (!project.trackerModel.empty() || !project.trackerOptions.empty()) {
+    json tracker = json::object();
+    if (!project.trackerModel.empty()) {
+      tracker["model"] = stored(folder, project.resolve(project.trackerModel));
+    }
+    json options = json::object();
+    for (const auto& [name, text] : project.trackerOptions) options[name] = optionValue(text);
+    tracker["options"] = options;
+    doc["tracker"] = tracker;
+  }
   writeTextAtomically(folder / Project::kFileName, doc.dump(2) + "\n");
 }
 

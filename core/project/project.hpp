@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,11 @@ struct Project {
   std::vector<std::filesystem::path> videos;       // videos to track
   std::vector<std::filesystem::path> tracks;       // tracker outputs (docs/tracks-csv.md)
   std::vector<std::filesystem::path> groundTruth;  // ground-truth sets (the tracker's columns)
+  // The studio Track page's tracker: the model it tracks with (empty = the first of `models`) and
+  // the tracker options changed from their defaults, by the names and in the text `clm3d track`
+  // takes them (core/track/tracker_options.hpp; the project does not judge them).
+  std::filesystem::path trackerModel;
+  std::map<std::string, std::string> trackerOptions;
 
   std::filesystem::path file() const { return folder / kFileName; }
   // Makes p absolute against the folder (absolute paths stay as they are).

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -11,6 +10,7 @@
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/pts_format.hpp"
 #include "core/scheme/text_scan.hpp"
+#include "core/track/frame_export.hpp"
 
 namespace clm3d {
 namespace {
@@ -192,9 +192,7 @@ int GroundTruthSet::interpolateKeyframes() {
 }
 
 std::filesystem::path groundTruthPtsName(int frame) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "frame_%06d.pts", frame);
-  return name;
+  return frameFileName(frame, ".pts");
 }
 
 void saveGroundTruth(const std::filesystem::path& csv, const GroundTruthSet& set,

@@ -57,10 +57,13 @@ struct TrackerSettings {
   // margin: a head turning past a view's range is caught by the next view before it is lost.
   // 0 switches the search off.
   double viewSearchConfidence = 0.7;
-  // The same for rlms, on the experts' scale: real16's good fits scored a median 0.60 (5th
-  // percentile 0.535) and its frames near view boundaries or past +-45 degrees 0.46-0.55 (same
-  // measurement as above), so 0.55 searches those. A higher value only costs time.
-  double viewSearchExpertConfidence = 0.55;
+  // The same for rlms, on the experts' scale; off by default. Different views' experts do not
+  // score on one scale, and on franck.mp4 (a frontal talking face whose frames score 0.45-0.6)
+  // a search at 0.55 let a neighbouring view win on noise every few hundred frames and walk the
+  // fit into a +-60 degree view (117-225 such frames, the points collapsing sideways); off, none.
+  // On procedural heads turning to +-80 degrees the rlms error at 30-60 degrees was 0.112 / 0.107
+  // off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
+  double viewSearchExpertConfidence = 0.0;
   double viewSearchMargin = 0.02;  // on either scale
   // Temporal smoothing of the written points (off by default). Only the rows' points are
   // smoothed: every frame is still searched from the raw fit, the pose, confidences and success

@@ -22,6 +22,15 @@ auto recordFits(std::vector<std::optional<FrameFit>>& fits) {
   };
 }
 
+// `model`, or (when null) the model loaded from `path` on the job's thread.
+std::shared_ptr<const ClmModel> modelOrLoad(std::shared_ptr<const ClmModel> model,
+                                            const std::filesystem::path& path,
+                                            const ProgressCallback& progress) {
+  if (model) return model;
+  progress(0.0, "loading the model");
+  return std::make_shared<const ClmModel>(loadModel(path));
+}
+
 }  // namespace
 
 JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path modelPath,
@@ -30,17 +39,32 @@ JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path model
   return [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
           settings = std::move(settings),
           outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
-    if (model) {
-      outcome->model = model;
-    } else {
-      progress(0.0, "loading the model");
-      outcome->model = std::make_shared<const ClmModel>(loadModel(modelPath));
-    }
+    outcome->model = modelOrLoad(model, modelPath, progress);
     cancel.throwIfCancelled();
     outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
                                   recordFits(outcome->fits), progress, &cancel);
   };
 }
+
+namespace {
+
+// The state that best reproduces `points` (NaN = missing) in `video`'s camera.
+FitState stateFromCorrected(const std::filesystem::path& video, const ClmModel& model,
+                            const Eigen::Matrix2Xd& points) {
+  VideoInfo info;
+  {
+    const VideoReader probe(video);
+    info.width = probe.width();
+    info.height = probe.height();
+  }
+  std::vector<bool> present(static_cast<std::size_t>(points.cols()));
+  for (int i = 0; i < points.cols(); ++i) {
+    present[static_cast<std::size_t>(i)] = points.col(i).allFinite();
+  }
+  return stateFromPoints(model, info.camera(), points, present);
+}
+
+}  // namespace
 
 JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const ClmModel> model,
                           TrackerSettings settings, int corrected, Eigen::Matrix2Xd points,
@@ -48,21 +72,27 @@ JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const Clm
   return [video = std::move(video), model = std::move(model), settings = std::move(settings),
           corrected, points = std::move(points),
           outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
-    VideoInfo info;
-    {
-      const VideoReader probe(video);
-      info.width = probe.width();
-      info.height = probe.height();
-    }
-    std::vector<bool> present(static_cast<std::size_t>(points.cols()));
-    for (int i = 0; i < points.cols(); ++i) {
-      present[static_cast<std::size_t>(i)] = points.col(i).allFinite();
-    }
-    const FitState state = stateFromPoints(*model, info.camera(), points, present);
+    const FitState state = stateFromCorrected(video, *model, points);
     outcome->corrected = corrected;
     retrackFrom(video, *model, settings, corrected, state, -1, outcome->rows,
                 recordFits(outcome->fits), progress, &cancel);
   };
+}
+
+JobRunner::Job loopRetrackJob(std::filesystem::path video, std::filesystem::path modelPath,
+                              std::shared_ptr<const ClmModel> model, TrackerSettings settings,
+                              std::vector<int> frames, std::vector<TrackRow> previous,
+                              RetrackRules rules, std::shared_ptr<LoopOutcome> outcome) {
+  return
+      [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
+       settings = std::move(settings), frames = std::move(frames), previous = std::move(previous),
+       rules, outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
+        outcome->model = modelOrLoad(model, modelPath, progress);
+        cancel.throwIfCancelled();
+        const FitState state = stateFromCorrected(video, *outcome->model, outcome->points);
+        retrackSpan(video, *outcome->model, settings, state, -1, frames, previous, rules,
+                    outcome->retrack, recordFits(outcome->fits), progress, &cancel);
+      };
 }
 
 JobRunner::Job exportOverlayJob(std::filesystem::path video, std::filesystem::path out,

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/track/retrack.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/track_session.hpp"
@@ -37,6 +38,23 @@ struct RetrackOutcome {
 JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const ClmModel> model,
                           TrackerSettings settings, int corrected, Eigen::Matrix2Xd points,
                           std::shared_ptr<RetrackOutcome> outcome);
+
+struct LoopOutcome {
+  int corrected = 0;
+  RetrackDirection direction = RetrackDirection::Forward;
+  Eigen::Matrix2Xd points;                    // the corrected frame's points the job started from
+  std::shared_ptr<const ClmModel> model;      // loaded by the job when none was given
+  SpanRetrack retrack;                        // rows in tracking order
+  std::vector<std::optional<FrameFit>> fits;  // per row of retrack.rows
+};
+
+// The correction loop's re-track (core retrackSpan) of `frames`, from the state that best
+// reproduces `points` (the corrected frame's), judged against `previous` (the frames' rows before).
+// `model` may be null, then the job loads `modelPath`.
+JobRunner::Job loopRetrackJob(std::filesystem::path video, std::filesystem::path modelPath,
+                              std::shared_ptr<const ClmModel> model, TrackerSettings settings,
+                              std::vector<int> frames, std::vector<TrackRow> previous,
+                              RetrackRules rules, std::shared_ptr<LoopOutcome> outcome);
 
 // Writes `out` (.mp4/.avi/.mkv) with every frame drawn by drawReviewOverlay: `shown` is the row to
 // draw per frame (the ground truth), `fits` the stored fit states.

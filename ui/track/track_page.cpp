@@ -33,6 +33,7 @@
 #include "ui/track/landmark_marks.hpp"
 #include "ui/track/player_bar.hpp"
 #include "ui/track/review_overlay.hpp"
+#include "ui/track/review_panel.hpp"
 #include "ui/track/timeline_widget.hpp"
 #include "ui/track/track_jobs.hpp"
 #include "ui/track/truth_commands.hpp"
@@ -62,9 +63,9 @@ TrackPage::TrackPage(QWidget* parent)
     progress_->setFormat(stage + " %p%");
   });
   connect(runner_, &JobRunner::failed, this, [this](const QString& message) {
-    const QString what = job_ == Job::Export    ? tr("Exporting the overlay video failed")
-                         : job_ == Job::Retrack ? tr("Re-tracking failed")
-                                                : tr("Tracking failed");
+    const QString what = job_ == Job::Export ? tr("Exporting the overlay video failed")
+                         : job_ == Job::Retrack || job_ == Job::Loop ? tr("Re-tracking failed")
+                                                                     : tr("Tracking failed");
     showError(this, what, message);
   });
   connect(runner_, &JobRunner::cancelled, this,
@@ -172,6 +173,7 @@ void TrackPage::buildLayout() {
   truthLayout->addWidget(exportButton_);
   side->addWidget(review);
   side->addWidget(truthBox);
+  buildLoopControls(top, side);
   side->addStretch(1);
 
   auto* middle = new QHBoxLayout;
@@ -219,6 +221,7 @@ void TrackPage::buildLayout() {
     if (!session_.hasPoints(current_)) return;
     undo_.push(moveLandmarkCommand(session_, current_, index, Eigen::Vector2d(to.x(), to.y()),
                                    [this] { truthChanged(); }));
+    correctionMade(current_);
   });
 }
 
@@ -251,6 +254,8 @@ void TrackPage::setProject(Project* project) {
     job_ = Job::None;  // the queued end of a cancelled job has nothing left to take over
     trackOutcome_.reset();
     retrackOutcome_.reset();
+    loopOutcome_.reset();
+    pendingLoopFrame_ = -1;
     player_->setPlaying(false);
     undo_.clear();
     session_ = TrackSession{};
@@ -265,6 +270,11 @@ void TrackPage::setProject(Project* project) {
   }
   project_ = project;
   fillProjectLists();
+  loadProjectTrackerSettings();
+  if (project_ && !project_->trackerModel.empty() && modelPath_.empty() &&
+      fs::exists(project_->trackerModel)) {
+    openModel(project_->trackerModel);  // the model last chosen in this project
+  }
   if (project_ && !project_->models.empty() && modelPath_.empty())
     openModel(project_->models.front());
   // A project's first video is what the user opens first anyway (the demo's test sequence).
@@ -390,6 +400,7 @@ void TrackPage::openModel(const fs::path& model) {
   session_.setModel(model, nullptr);
   overlayFitter_.reset();
   if (project_ && project_->addUnique(project_->models, model)) emit projectModified();
+  rememberModel(model);
   fillProjectLists();
   updateControls();
 }
@@ -414,7 +425,7 @@ bool TrackPage::startTracking() {
   trackOutcome_ = std::make_shared<TrackOutcome>();
   job_ = Job::Track;
   runner_->start(tr("tracking"), trackJob(session_.video().path, modelPath_, session_.model(),
-                                          TrackerSettings{}, trackOutcome_));
+                                          trackerSettings_, trackOutcome_));
   updateControls();
   return true;
 }
@@ -430,7 +441,7 @@ bool TrackPage::retrackFromCurrentFrame() {
   retrackOutcome_ = std::make_shared<RetrackOutcome>();
   job_ = Job::Retrack;
   runner_->start(tr("re-tracking"),
-                 retrackJob(session_.video().path, session_.model(), TrackerSettings{}, current_,
+                 retrackJob(session_.video().path, session_.model(), trackerSettings_, current_,
                             session_.truth().table.rows[static_cast<std::size_t>(current_)].points,
                             retrackOutcome_));
   updateControls();
@@ -483,6 +494,8 @@ void TrackPage::onJobEnded() {
       saveTracks();
     }
     retrackOutcome_.reset();
+  } else if (job == Job::Loop) {
+    takeLoopOutcome();
   } else if (job == Job::Export && runner_->elapsedSeconds() >= 0 && fs::exists(exportPath_)) {
     emit statusMessage(tr("Overlay video written to %1").arg(qPath(exportPath_)));
   }
@@ -491,6 +504,7 @@ void TrackPage::onJobEnded() {
   refreshTimeline();
   showFrame();
   updateControls();
+  if (pendingLoopFrame_ >= 0 && !loopTimer_->isActive()) startPendingLoop();
 }
 
 void TrackPage::saveTracks() {
@@ -553,7 +567,7 @@ bool TrackPage::compareWith(const fs::path& reference) {
 }
 
 void TrackPage::toggleKeyframe() {
-  if (isBusy() || !session_.hasPoints(current_)) return;
+  if (editsBlocked() || !session_.hasPoints(current_)) return;
   undo_.push(toggleKeyframeCommand(session_, current_, [this] { truthChanged(); }));
 }
 
@@ -652,7 +666,7 @@ void TrackPage::showFrame() {
   // frame threshold of the settings the page tracks with.
   frameView_->setLandmarks(
       points, colours,
-      landmarkMarks(session_.trackRow(current_), points, confidenceThreshold(TrackerSettings{})));
+      landmarkMarks(session_.trackRow(current_), points, confidenceThreshold(trackerSettings_)));
 
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];
@@ -707,8 +721,10 @@ void TrackPage::updateControls() {
   cancelButton_->setEnabled(busy);
   videoCombo_->setEnabled(!busy);
   modelCombo_->setEnabled(!busy);
-  frameView_->setEditable(!busy);
-  keyframeButton_->setEnabled(!busy && points);
+  frameView_->setEditable(!editsBlocked());
+  keyframeButton_->setEnabled(!editsBlocked() && points);
+  review_->setEditable(!editsBlocked() && points, !busy && points);
+  settingsButton_->setEnabled(!busy);
   interpolateButton_->setEnabled(!busy && session_.truth().keyframeCount() >= 2);
   retrackButton_->setEnabled(!busy && tracked && points);
   saveButton_->setEnabled(!busy && session_.truth().table.landmarkCount > 0);

@@ -10,9 +10,12 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/track/correction_loop.hpp"
+#include "core/track/tracker.hpp"
 #include "ui/common/page.hpp"
 #include "ui/track/track_session.hpp"
 
+class QBoxLayout;
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -30,7 +33,9 @@ class FrameSource;
 class FrameView;
 class JobRunner;
 class PlayerBar;
+class ReviewPanel;
 class TimelineWidget;
+struct LoopOutcome;
 struct TrackOutcome;
 struct RetrackOutcome;
 
@@ -79,8 +84,38 @@ class TrackPage : public Page {
   double longestOverlayMs() const { return longestOverlayMs_; }
   double longestDecodeMs() const;
 
+  // --- Tracker settings and the correction loop (track_page_loop.cpp) -------------------------
+  // The settings every track and re-track uses; setting them remembers the changed options in the
+  // project (Project::trackerOptions) and emits projectModified.
+  const TrackerSettings& trackerSettings() const { return trackerSettings_; }
+  void setTrackerSettings(const TrackerSettings& settings);
+  bool editTrackerSettings();  // the "Settings…" dialog; true when accepted
+  // The tracker in the loop (L): a drag re-tracks forward from its frame by itself.
+  bool loopEnabled() const;
+  void setLoopEnabled(bool enabled);
+  // Re-tracks from `frame`'s points over the loop's span (core/track/correction_loop.hpp), on the
+  // worker; false (with a status message) when there is nothing to re-track or a job runs.
+  bool retrackSpanFrom(int frame, RetrackDirection direction);
+  // The keyboard review: N / Shift+N, J / Shift+J, A. False when there is no such frame.
+  bool goToNextToReview(int step);
+  bool goToNextKeyframe(int step);
+  bool acceptAsKeyframe();
+  // A loop re-track is waiting for the drags to settle or running.
+  bool loopPending() const;
+  int loopRetracks() const { return loopRetracks_; }
+  ReviewPanel* reviewPanel() { return review_; }
+
  private:
-  enum class Job { None, Track, Retrack, Export };
+  enum class Job { None, Track, Retrack, Export, Loop };
+  // The settings button (in `top`), the review panel (in `side`), the loop's shortcuts.
+  void buildLoopControls(QBoxLayout* top, QBoxLayout* side);
+  void loadProjectTrackerSettings();
+  void rememberModel(const std::filesystem::path& model);
+  void correctionMade(int frame);
+  void startPendingLoop();
+  void takeLoopOutcome();
+  bool editsBlocked() const;  // a job other than a loop re-track runs
+  // --- end of the correction loop --------------------------------------------------------------
 
   void buildLayout();
   void connectShortcuts();
@@ -132,6 +167,14 @@ class TrackPage : public Page {
   QPushButton* saveButton_ = nullptr;
   QPushButton* exportButton_ = nullptr;
   QTimer* autosaveTimer_ = nullptr;
+  // The correction loop's state (track_page_loop.cpp).
+  TrackerSettings trackerSettings_;
+  ReviewPanel* review_ = nullptr;
+  QPushButton* settingsButton_ = nullptr;
+  QTimer* loopTimer_ = nullptr;
+  std::shared_ptr<LoopOutcome> loopOutcome_;
+  int pendingLoopFrame_ = -1;
+  int loopRetracks_ = 0;
 };
 
 }  // namespace clm3d::ui

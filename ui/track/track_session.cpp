@@ -67,9 +67,19 @@ void TrackSession::replaceTrackAfter(int corrected, std::vector<TrackRow> rows,
                                      std::vector<std::optional<FrameFit>> fits) {
   const auto keep = static_cast<std::size_t>(corrected + 1);
   if (track_.rows.size() > keep) track_.rows.resize(keep);
-  // Frames a cancelled run did not reach, up to the corrected one, stay untracked rows, so that
-  // row i is still frame i.
-  while (track_.rows.size() < keep) {
+  // Frames a cancelled run did not reach, up to the corrected one, stay untracked rows.
+  padTrackTo(keep);
+  fits_.resize(keep);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    track_.rows.push_back(std::move(rows[i]));
+    fits_.push_back(i < fits.size() ? std::move(fits[i]) : std::nullopt);
+  }
+  mergeTrackIntoTruth(corrected + 1);
+  updateErrors();
+}
+
+void TrackSession::padTrackTo(std::size_t rows) {
+  while (track_.rows.size() < rows) {
     TrackRow row;
     row.frame = static_cast<int>(track_.rows.size());
     row.timestamp = row.frame / video_.fps;
@@ -77,12 +87,24 @@ void TrackSession::replaceTrackAfter(int corrected, std::vector<TrackRow> rows,
                                             std::numeric_limits<double>::quiet_NaN());
     track_.rows.push_back(std::move(row));
   }
-  fits_.resize(keep);
+}
+
+void TrackSession::replaceTrackFrames(std::vector<TrackRow> rows,
+                                      std::vector<std::optional<FrameFit>> fits) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    track_.rows.push_back(std::move(rows[i]));
-    fits_.push_back(i < fits.size() ? std::move(fits[i]) : std::nullopt);
+    TrackRow& row = rows[i];
+    if (row.frame < 0 || row.frame >= video_.frameCount) continue;
+    if (track_.landmarkCount == 0) track_.landmarkCount = static_cast<int>(row.points.cols());
+    const auto f = static_cast<std::size_t>(row.frame);
+    padTrackTo(f + 1);
+    fits_.resize(track_.rows.size());
+    fits_[f] = i < fits.size() ? std::move(fits[i]) : std::nullopt;
+    if (row.frame < truth_.frameCount() && !truth_.keyframe[f] &&
+        truth_.table.landmarkCount == row.points.cols()) {
+      truth_.table.rows[f] = row;
+    }
+    track_.rows[f] = std::move(row);
   }
-  mergeTrackIntoTruth(corrected + 1);
   updateErrors();
 }
 

@@ -56,6 +56,9 @@ class TrackSession {
   // ground truth's rows that are not keyframes).
   void replaceTrackAfter(int corrected, std::vector<TrackRow> rows,
                          std::vector<std::optional<FrameFit>> fits);
+  // Rows the correction loop re-tracked (any frames, any order) replace the track's rows of their
+  // frames and the ground truth's rows of those frames that are not keyframes.
+  void replaceTrackFrames(std::vector<TrackRow> rows, std::vector<std::optional<FrameFit>> fits);
 
   // The ground-truth set being corrected: one row per frame once a track or a set is loaded.
   const GroundTruthSet& truth() const { return truth_; }
@@ -72,6 +75,7 @@ class TrackSession {
 
  private:
   void mergeTrackIntoTruth(int fromFrame);
+  void padTrackTo(std::size_t rows);  // untracked rows, so that row i stays frame i
 
   VideoInfo video_;
   std::filesystem::path modelPath_;

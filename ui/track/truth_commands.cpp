@@ -23,11 +23,27 @@ void TruthRowCommand::apply(const RowState& state) {
 }
 
 void TruthRowCommand::undo() {
+  if (followUp_) session_.truth() = followUp_->first;
   apply(before_);
 }
 
 void TruthRowCommand::redo() {
   apply(after_);
+  if (followUp_) {
+    session_.truth() = followUp_->second;
+    session_.updateErrors();
+    if (changed_) changed_();
+  }
+}
+
+bool TruthRowCommand::mergeWith(const QUndoCommand* other) {
+  const auto* followUp = dynamic_cast<const FollowUpCommand*>(other);
+  if (!takesFollowUp_ || followUp_ || followUp == nullptr || followUp->frame() != frame_) {
+    return false;
+  }
+  followUp_.emplace(followUp->before(), followUp->after());
+  setText(QObject::tr("%1, re-tracked").arg(text()));
+  return true;
 }
 
 namespace {
@@ -58,9 +74,11 @@ TruthRowCommand* moveLandmarkCommand(TrackSession& session, int frame, int index
   const TruthRowCommand::RowState before = currentState(session, frame);
   Eigen::Matrix2Xd points = before.row.points;
   points.col(index) = to;
-  return new TruthRowCommand(QObject::tr("Move landmark %1 on frame %2").arg(index + 1).arg(frame),
-                             session, frame, before, keyframeState(session, frame, points),
-                             std::move(changed));
+  auto* command = new TruthRowCommand(
+      QObject::tr("Move landmark %1 on frame %2").arg(index + 1).arg(frame), session, frame, before,
+      keyframeState(session, frame, points), std::move(changed));
+  command->setTakesFollowUp(true);
+  return command;
 }
 
 TruthRowCommand* toggleKeyframeCommand(TrackSession& session, int frame, TruthChanged changed) {

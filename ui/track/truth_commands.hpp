@@ -5,12 +5,17 @@
 
 #include <QUndoCommand>
 #include <functional>
+#include <optional>
+#include <utility>
 
 #include "ui/track/track_session.hpp"
 
 namespace clm3d::ui {
 
 using TruthChanged = std::function<void()>;
+
+// The id of the commands that can merge: a landmark drag and the re-track that follows it.
+inline constexpr int kTruthEditId = 0x7431;
 
 // One truth row (points and keyframe flag) before and after an edit of frame `frame`.
 class TruthRowCommand : public QUndoCommand {
@@ -24,6 +29,11 @@ class TruthRowCommand : public QUndoCommand {
   void undo() override;
   void redo() override;
   int frame() const { return frame_; }
+  // A drag takes in the FollowUpCommand of its frame pushed right after it (the correction loop's
+  // re-track), so one undo takes back the drag and what it re-tracked.
+  int id() const override { return kTruthEditId; }
+  bool mergeWith(const QUndoCommand* other) override;
+  void setTakesFollowUp(bool takes) { takesFollowUp_ = takes; }
 
  private:
   void apply(const RowState& state);
@@ -32,6 +42,8 @@ class TruthRowCommand : public QUndoCommand {
   int frame_;
   RowState before_, after_;
   TruthChanged changed_;
+  bool takesFollowUp_ = false;
+  std::optional<std::pair<GroundTruthSet, GroundTruthSet>> followUp_;  // before, after
 };
 
 // Moving landmark `index` of `frame` to `to` (pixels): the frame becomes a keyframe, since its
@@ -48,11 +60,28 @@ class TruthSetCommand : public QUndoCommand {
                   GroundTruthSet after, TruthChanged changed);
   void undo() override;
   void redo() override;
+  const GroundTruthSet& before() const { return before_; }
+  const GroundTruthSet& after() const { return after_; }
 
  private:
   TrackSession& session_;
   GroundTruthSet before_, after_;
   TruthChanged changed_;
+};
+
+// The re-track the correction loop ran by itself after `frame` was corrected: pushed right after
+// the drag of that frame it merges into it; otherwise it is an undo step of its own.
+class FollowUpCommand : public TruthSetCommand {
+ public:
+  FollowUpCommand(const QString& text, TrackSession& session, int frame, GroundTruthSet before,
+                  GroundTruthSet after, TruthChanged changed)
+      : TruthSetCommand(text, session, std::move(before), std::move(after), std::move(changed)),
+        frame_(frame) {}
+  int id() const override { return kTruthEditId; }
+  int frame() const { return frame_; }
+
+ private:
+  int frame_;
 };
 
 }  // namespace clm3d::ui

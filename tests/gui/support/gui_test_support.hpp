@@ -8,8 +8,10 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <exception>
 #include <filesystem>
 #include <functional>
+#include <thread>
 
 namespace clm3d::test {
 
@@ -47,6 +49,22 @@ void answerNextMessageBox(const QString& objectName, QMessageBox::StandardButton
 // Arms a check that closes the next modal error dialog (object name "errorDialog") and stores its
 // informative text in *message. Call before the action that should fail.
 void expectErrorDialog(QString* message, int timeoutMs = 10000);
+
+// Runs `work` on a worker thread and waits, rethrowing what it threw: training and rendering use
+// the offscreen renderer, which must not run on the GUI thread.
+template <typename Work>
+void runOffGuiThread(Work&& work) {
+  std::exception_ptr error;
+  std::thread worker([&] {
+    try {
+      work();
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  worker.join();
+  if (error) std::rethrow_exception(error);
+}
 
 std::filesystem::path fixturePath(const std::string& relative);
 std::filesystem::path binaryDir();

@@ -27,7 +27,7 @@
 #include "core/video/video_reader.hpp"
 #include "tests/gui/project/isolated_settings.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
-#include "tests/support/fit_fixture.hpp"
+#include "tests/gui/track/track_fixture.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/project/studio_settings.hpp"
 #include "ui/track/frame_view.hpp"
@@ -40,22 +40,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kFrames = 16;
-
-// Runs `work` on a worker thread and waits: training and rendering use the offscreen renderer,
-// which must not run on the GUI thread.
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
 
 QString screenshotFolder() {
   return QProcessEnvironment::systemEnvironment().value("CLM3D_STUDIO_SCREENSHOTS");
@@ -87,23 +71,9 @@ class TrackPageTest : public QObject {
  private slots:
   void initTestCase() {
     project_ = createProject(temp_.path() / "project", "track-test");
-    model_ = project_.folder / "models" / "fixture.clm3d";
-    sequence_ = SequenceFiles::inFolder(project_.folder / "videos" / "turn");
-    runOffGuiThread([&] {
-      fs::create_directories(model_.parent_path());
-      saveModel(test::fitTestModel(), model_);
-      SequenceSettings settings;
-      settings.yawFromDeg = 0.0;
-      settings.yawToDeg = 2.0 * (kFrames - 1);
-      settings.stepDeg = 2.0;
-      settings.width = 320;
-      settings.height = 240;
-      settings.interOcularPixels = 56.0;
-      settings.supersample = 1;
-      const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-      writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings,
-                             SequenceSubject{}, sequence_);
-    });
+    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 2.0);
+    model_ = fixture.model;
+    sequence_ = fixture.sequence;
     project_.models.push_back(model_);
     project_.videos.push_back(sequence_.video);
     page_ = std::make_unique<TrackPage>();
@@ -114,6 +84,8 @@ class TrackPageTest : public QObject {
     QVERIFY(QTest::qWaitForWindowActive(page_.get()));
     page_->setFocus();
     page_->setProject(&project_);
+    // Drags here are single edits; the re-track that follows them is correction_loop_test's.
+    page_->setLoopEnabled(false);
     QCOMPARE(page_->title(), QString("Track"));
   }
 
@@ -208,7 +180,7 @@ class TrackPageTest : public QObject {
   // The frame view draws what the tracker wrote per landmark: visible_k = 0 hollow, conf_k below
   // the tracker's threshold ringed (landmark_marks_test checks the drawing itself).
   void theFrameViewMarksWhatTheTrackerWrote() {
-    const double threshold = confidenceThreshold(TrackerSettings{});
+    const double threshold = confidenceThreshold(page_->trackerSettings());
     int hidden = 0;
     for (int f = 0; f < kFrames; ++f) {
       page_->setCurrentFrame(f);

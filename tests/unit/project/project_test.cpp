@@ -24,6 +24,30 @@ std::string errorOf(const fs::path& path) {
   return {};
 }
 
+TEST(Project, TrackerModelAndOptionsRoundTrip) {
+  const test::TempDir dir;
+  Project project = createProject(dir.path() / "tracked");
+  project.trackerModel = project.folder / "models" / "m.clm3d";
+  project.trackerOptions = {{"optimiser", "rlms"},
+                            {"min-expert-confidence", "0.4"},
+                            {"scales", "2"},
+                            {"no-alpha", "true"}};
+  saveProject(project);
+  const std::string text = test::readFile(project.file());
+  EXPECT_NE(text.find("\"models/m.clm3d\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"min-expert-confidence\": 0.4"), std::string::npos) << text;
+  const Project back = loadProject(project.folder);
+  EXPECT_EQ(back.trackerModel, project.trackerModel);
+  EXPECT_EQ(back.trackerOptions, project.trackerOptions);
+
+  writeText(
+      project.file(),
+      R"({"format": "clm3d-project", "version": 1, "tracker": {"options": {"scales": [2]}}})");
+  const std::string message = errorOf(project.file());
+  EXPECT_NE(message.find("clm3d-project.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("scales"), std::string::npos) << message;
+}
+
 TEST(Project, RoundTripStoresPathsRelativeToTheFolder) {
   const test::TempDir dir;
   Project project = createProject(dir.path() / "study", "My study");

@@ -100,5 +100,53 @@ TEST(RetrackFrom, CancelKeepsTheRowsSoFar) {
   EXPECT_EQ(rows.front().frame, 1);
 }
 
+// The correction loop's re-track: forward over a span it follows the head; where the frames held
+// rows it agrees with it stops (rejoined); backward it reads the frames in reverse.
+TEST(RetrackSpan, ForwardStopsWhereItRejoinsAndBackwardReadsInReverse) {
+  const test::TempDir dir;
+  SequenceFiles files;
+  const SequenceSummary sequence = writeShortSequence(dir.path(), files);
+  const ClmModel& model = test::fitTestModel();
+  const FitState state = stateFromPoints(model, sequence.camera, sequence.truth.rows[2].points, {});
+  // Nothing to rejoin: the whole span is tracked.
+  SpanRetrack forward;
+  retrackSpan(files.video, model, TrackerSettings{}, state, -1, {3, 4, 5, 6}, {}, RetrackRules{},
+              forward);
+  ASSERT_EQ(forward.rows.size(), 4u);
+  EXPECT_EQ(forward.stop, RetrackStop::Continue);
+  for (std::size_t i = 0; i < forward.rows.size(); ++i) {
+    EXPECT_EQ(forward.rows[i].frame, 3 + static_cast<int>(i));
+    EXPECT_TRUE(forward.rows[i].success);
+  }
+  // The same run again, with frames 5 and on holding the first run's rows: it stops at 5.
+  std::vector<TrackRow> previous(7);
+  previous[5] = forward.rows[2];
+  previous[6] = forward.rows[3];
+  SpanRetrack again;
+  retrackSpan(files.video, model, TrackerSettings{}, state, -1, {3, 4, 5, 6}, previous,
+              RetrackRules{}, again);
+  ASSERT_EQ(again.rows.size(), 3u);
+  EXPECT_EQ(again.stop, RetrackStop::Rejoined);
+  EXPECT_EQ(again.stoppedAt, 5);
+
+  const FitState last = stateFromPoints(model, sequence.camera, sequence.truth.rows[6].points, {});
+  SpanRetrack backward;
+  retrackSpan(files.video, model, TrackerSettings{}, last, -1, {5, 4, 3}, {}, RetrackRules{},
+              backward);
+  ASSERT_EQ(backward.rows.size(), 3u);
+  for (std::size_t i = 0; i < backward.rows.size(); ++i) {
+    const int frame = 5 - static_cast<int>(i);
+    EXPECT_EQ(backward.rows[i].frame, frame);
+    const Eigen::Matrix2Xd& truth = sequence.truth.rows[static_cast<std::size_t>(frame)].points;
+    const double interOcular = (truth.col(7) - truth.col(10)).norm();
+    EXPECT_LT(test::meanPointError(backward.rows[i].points, truth) / interOcular, 0.08)
+        << "frame " << frame;
+  }
+  SpanRetrack outside;
+  EXPECT_THROW(retrackSpan(files.video, model, TrackerSettings{}, last, -1, {40}, {},
+                           RetrackRules{}, outside),
+               InputError);
+}
+
 }  // namespace
 }  // namespace clm3d

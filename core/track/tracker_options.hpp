@@ -1,0 +1,58 @@
+// The tracker's settings as named options, described once: name (the command line's spelling),
+// label and group (the studio's form), kind, range, help, and how each reads and writes a
+// TrackerSettings. `clm3d fit` / `clm3d track` build their options from this table, the studio's
+// Track page builds its settings form from it, and a project stores the options it changed under
+// the same names, so the CLI's help, the GUI's labels and tooltips and the saved settings cannot
+// drift apart (docs/tracking.md, docs/studio-track.md). The table is static: references to its
+// entries stay valid for the program's life.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/track/tracker.hpp"
+
+namespace clm3d {
+
+enum class OptionKind { Integer, Real, Flag, Choice };
+
+// Search: the options of the search itself (`clm3d fit` and `clm3d track`); Track: the tracker's
+// own (failure thresholds, motion, view search, smoothing; `clm3d track` only).
+enum class OptionScope { Search, Track };
+
+struct TrackerOption {
+  std::string name;   // as on the command line without "--", e.g. "min-expert-confidence"
+  std::string label;  // the studio's label
+  std::string group;  // the studio's section: "Search", "Failure", "Motion", "Smoothing"
+  OptionScope scope = OptionScope::Search;
+  OptionKind kind = OptionKind::Real;
+  std::string help;      // the command line's help and the studio's tooltip
+  double minimum = 0.0;  // Integer and Real: inclusive range
+  double maximum = 0.0;
+  int decimals = 2;                  // Real: digits the studio shows
+  std::vector<std::string> choices;  // Choice: the valid values
+  // The value as text, as it is written after the option on the command line (Flag: "true" or
+  // "false"; Real: the shortest text that reads back to the same double).
+  std::function<std::string(const TrackerSettings&)> get;
+  // Parses `text` into the settings; InputError saying the option, the value and the valid range
+  // or choices when it is not valid.
+  std::function<void(TrackerSettings&, std::string_view text)> set;
+
+  std::string defaultText() const { return get(TrackerSettings{}); }
+};
+
+const std::vector<TrackerOption>& trackerOptions();
+// nullptr when there is no option of that name.
+const TrackerOption* findTrackerOption(std::string_view name);
+
+// The options whose value differs from the default, name -> text: what a project remembers.
+std::map<std::string, std::string> changedTrackerOptions(const TrackerSettings& settings);
+// Defaults with `options` applied. InputError naming `source` (a file, or "the command line") and
+// the option for an unknown name or a bad value.
+TrackerSettings trackerSettingsFrom(const std::map<std::string, std::string>& options,
+                                    const std::string& source);
+
+}  // namespace clm3d

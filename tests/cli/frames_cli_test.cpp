@@ -1,0 +1,44 @@
+// clm3d frames through the real binary: a lossless video's frames come out as numbered images,
+// the count is reported, and a missing video exits 1 naming the file.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "core/video/video_writer.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+using test::runClm3d;
+
+TEST(FramesCli, WritesEveryNthFrame) {
+  test::TempDir dir;
+  const auto video = dir / "v.avi";
+  {
+    VideoWriter writer(video, 32, 24, 25.0);
+    for (int i = 0; i < 7; ++i) writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(30 * i)));
+    writer.close();
+  }
+  const auto result = runClm3d("frames --video " + video.string() + " --out " +
+                               (dir / "frames").string() + " --every 2 --format jpg --quiet");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("wrote 4 of 7 frames"), std::string::npos) << result.output;
+  for (const char* name :
+       {"frame_000000.jpg", "frame_000002.jpg", "frame_000004.jpg", "frame_000006.jpg"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "frames" / name)) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_000001.jpg"));
+}
+
+TEST(FramesCli, AMissingVideoExits1NamingIt) {
+  test::TempDir dir;
+  const auto result = runClm3d("frames --video " + (dir / "nothing.mp4").string() + " --out " +
+                               (dir / "frames").string());
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("nothing.mp4"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace clm3d

@@ -1,0 +1,105 @@
+// The tracker's option table: every option's default is the TrackerSettings default, texts read
+// back to the same value, values out of range or unknown are InputErrors naming the option, and
+// changed options round-trip through name -> text maps (what a project stores).
+#include "core/track/tracker_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/common/error.hpp"
+
+namespace clm3d {
+namespace {
+
+std::string errorOf(const std::map<std::string, std::string>& options) {
+  try {
+    trackerSettingsFrom(options, "project.json");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return {};
+}
+
+TEST(TrackerOptions, NamesAreUniqueAndDescribed) {
+  std::set<std::string> names;
+  for (const TrackerOption& option : trackerOptions()) {
+    EXPECT_TRUE(names.insert(option.name).second) << option.name;
+    EXPECT_FALSE(option.label.empty()) << option.name;
+    EXPECT_FALSE(option.group.empty()) << option.name;
+    EXPECT_FALSE(option.help.empty()) << option.name;
+    if (option.kind == OptionKind::Choice) {
+      EXPECT_FALSE(option.choices.empty()) << option.name;
+    }
+    if (option.kind == OptionKind::Integer || option.kind == OptionKind::Real) {
+      EXPECT_LT(option.minimum, option.maximum) << option.name;
+    }
+  }
+  // The options issue 13 asks the studio to set, under the command line's names.
+  for (const char* name : {"optimiser", "scales", "detector", "min-confidence",
+                           "min-expert-confidence", "max-shape-rms", "motion-prediction"}) {
+    EXPECT_NE(findTrackerOption(name), nullptr) << name;
+  }
+  EXPECT_EQ(findTrackerOption("no-such-option"), nullptr);
+}
+
+TEST(TrackerOptions, DefaultsAreTheSettingsDefaultsAndNothingIsChanged) {
+  const TrackerSettings defaults;
+  EXPECT_EQ(findTrackerOption("min-expert-confidence")->defaultText(), "0.45");
+  EXPECT_EQ(findTrackerOption("optimiser")->defaultText(), defaults.fit.optimiser);
+  EXPECT_EQ(findTrackerOption("no-alpha")->defaultText(), "false");
+  EXPECT_EQ(findTrackerOption("detector")->defaultText(), "cascade");
+  EXPECT_TRUE(changedTrackerOptions(defaults).empty());
+}
+
+TEST(TrackerOptions, EveryOptionsDefaultTextReadsBackToTheDefault) {
+  for (const TrackerOption& option : trackerOptions()) {
+    TrackerSettings settings;
+    option.set(settings, option.defaultText());
+    EXPECT_TRUE(changedTrackerOptions(settings).empty()) << option.name;
+  }
+}
+
+TEST(TrackerOptions, ChangedOptionsRoundTripThroughTexts) {
+  TrackerSettings settings;
+  settings.fit.optimiser = "rlms";
+  settings.fit.scales = 2;
+  settings.fit.alphaMask = false;
+  settings.minExpertConfidence = 0.3;
+  settings.motionPrediction = 0.5;
+  settings.maxShapeRms = 3.25;
+  const std::map<std::string, std::string> changed = changedTrackerOptions(settings);
+  EXPECT_EQ(changed.size(), 6u);
+  EXPECT_EQ(changed.at("min-expert-confidence"), "0.3");
+  EXPECT_EQ(changed.at("no-alpha"), "true");
+  EXPECT_EQ(changed.at("optimiser"), "rlms");
+  const TrackerSettings back = trackerSettingsFrom(changed, "test");
+  EXPECT_EQ(back.fit.optimiser, "rlms");
+  EXPECT_EQ(back.fit.scales, 2);
+  EXPECT_FALSE(back.fit.alphaMask);
+  EXPECT_DOUBLE_EQ(back.minExpertConfidence, 0.3);
+  EXPECT_DOUBLE_EQ(back.motionPrediction, 0.5);
+  EXPECT_DOUBLE_EQ(back.maxShapeRms, 3.25);
+  EXPECT_EQ(changedTrackerOptions(back), changed);
+}
+
+TEST(TrackerOptions, BadValuesNameTheSourceTheOptionAndWhatIsValid) {
+  std::string message = errorOf({{"min-expert-confidence", "1.5"}});
+  EXPECT_NE(message.find("project.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("--min-expert-confidence"), std::string::npos) << message;
+  EXPECT_NE(message.find("0..1"), std::string::npos) << message;
+  message = errorOf({{"scales", "2.5"}});
+  EXPECT_NE(message.find("whole number"), std::string::npos) << message;
+  message = errorOf({{"scales", "two"}});
+  EXPECT_NE(message.find("--scales"), std::string::npos) << message;
+  message = errorOf({{"optimiser", "simulated-annealing"}});
+  EXPECT_NE(message.find("fastncc"), std::string::npos) << message;
+  message = errorOf({{"no-alpha", "maybe"}});
+  EXPECT_NE(message.find("true or false"), std::string::npos) << message;
+  message = errorOf({{"smoothness", "1"}});
+  EXPECT_NE(message.find("unknown tracker option 'smoothness'"), std::string::npos) << message;
+  EXPECT_TRUE(errorOf({{"scales", "3"}, {"detector", "dlib"}}).empty());
+}
+
+}  // namespace
+}  // namespace clm3d
