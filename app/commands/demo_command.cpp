@@ -5,19 +5,19 @@
 // -> tracking it (overlay video with the patches drawn in place) -> the evaluation against the
 // exact ground truth, whose summary ends the output. The folder is also a clm3d project (a dataset
 // manifest of the heads, the model, the video, its track and ground truth) that clm3d-studio opens.
-#include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <mutex>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 #include "app/commands/commands.hpp"
-#include "core/common/atomic_file.hpp"
+#include "core/common/data_paths.hpp"
+#include "core/common/decile_progress.hpp"
+#include "core/common/parallel_for.hpp"
+#include "core/dataset/manifest_writer.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/eval/synthetic_sequence.hpp"
@@ -25,6 +25,7 @@
 #include "core/mesh/mesh_export.hpp"
 #include "core/model/model_file.hpp"
 #include "core/project/project.hpp"
+#include "core/project/project_layout.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
@@ -50,23 +51,15 @@ struct DemoArgs {
   int samples = 3;
   double sequenceStep = 2.0;
   std::string optimiser = "fastncc";
+  bool real = false;  // also a real face (needs the shared data)
+  fs::path realManifest = "resources/datasets/real.json";  // relative to the working folder
 };
 
 // The held-out head of the test sequence: a seed none of the training heads uses.
 constexpr std::uint64_t kHeldOutSeed = 1000;
 
-// The thesis's 15 training views: yaw -60..60 and pitch -30..30 in steps of 30 degrees.
-struct View {
-  double pitch;
-  double yaw;
-};
-std::vector<View> trainingViews() {
-  std::vector<View> views;
-  for (double pitch : {-30.0, 0.0, 30.0}) {
-    for (double yaw : {-60.0, -30.0, 0.0, 30.0, 60.0}) views.push_back({pitch, yaw});
-  }
-  return views;
-}
+// The model's name in the project's models folder.
+constexpr const char* kModelName = "demo";
 
 struct RenderedView {
   cv::Mat overlay;
@@ -74,7 +67,7 @@ struct RenderedView {
   std::string hiddenNames;
 };
 
-RenderedView renderView(OffscreenRenderer& renderer, const SynthHead& head, const View& view,
+RenderedView renderView(OffscreenRenderer& renderer, const SynthHead& head, const ViewCentre& view,
                         int size, const fs::path& stem) {
   const Scheme& scheme = Scheme::thesis25();
   // Frame the face, not the whole head: the landmarks (earlobes included) span ~85% of the image.
@@ -82,7 +75,7 @@ RenderedView renderView(OffscreenRenderer& renderer, const SynthHead& head, cons
   const Eigen::Vector3d centroid = points.rowwise().mean();
   const double radius = (points.colwise() - centroid).colwise().norm().maxCoeff();
   Camera camera = Camera::fromVerticalFov(size, size, 30.0);
-  Pose pose = Pose::fromDegrees(view.pitch, view.yaw, 0.0);
+  Pose pose = Pose::fromDegrees(view.pitchDeg, view.yawDeg, 0.0);
   pose.translation = -(pose.rotation() * centroid);
   pose.translation.z() += distanceToFit(radius, camera, 0.85);
   camera = Camera::fromVerticalFov(size, size, 30.0, 10.0, -pose.translation.z() + 400.0);
@@ -107,108 +100,80 @@ RenderedView renderView(OffscreenRenderer& renderer, const SynthHead& head, cons
   return rendered;
 }
 
-std::string viewName(const View& view) {
+std::string viewName(const ViewCentre& view) {
   std::ostringstream name;
-  name << "yaw" << std::showpos << static_cast<int>(view.yaw) << "_pitch"
-       << static_cast<int>(view.pitch);
+  name << "yaw" << std::showpos << static_cast<int>(view.yawDeg) << "_pitch"
+       << static_cast<int>(view.pitchDeg);
   return name.str();
 }
 
-struct DemoHeadFile {
-  fs::path mesh, landmarks;  // relative to the output folder
-  std::string subject, expression;
-};
-
-// dataset.json (docs/dataset.md) listing the training heads as scans, so the studio's annotate
-// and train pages open them like any scanned dataset. The names are the demo's own (no quoting
-// needed).
-fs::path writeDemoManifest(const fs::path& out, const std::vector<DemoHeadFile>& heads) {
-  std::ostringstream json;
-  json << "{\n  \"version\": 1,\n  \"name\": \"clm3d-demo-heads\",\n  \"scheme\": \"thesis25\",\n"
-       << "  \"scans\": [\n";
-  for (std::size_t i = 0; i < heads.size(); ++i) {
-    json << "    {\"mesh\": \"" << heads[i].mesh.generic_string() << "\", \"landmarks\": \""
-         << heads[i].landmarks.generic_string() << "\", \"subject\": \"" << heads[i].subject
-         << "\", \"expression\": \"" << heads[i].expression << "\"}"
-         << (i + 1 < heads.size() ? "," : "") << '\n';
-  }
-  json << "  ]\n}\n";
-  const fs::path path = out / "dataset.json";
-  writeTextAtomically(path, json.str());
-  return path;
+// Progress lines on stderr at every tenth, safe to call from the workers.
+DecileProgress stderrProgress(const std::string& what) {
+  return DecileProgress(
+      [what](int percent, std::string_view stage) {
+        std::cerr << "demo: " << what << (stage.empty() ? "" : " ") << stage << " " << percent
+                  << "%\n";
+      },
+      true);
 }
 
-void runDemo(const DemoArgs& args) {
-  const auto start = std::chrono::steady_clock::now();
-  const fs::path headsDir = args.out / "heads";
-  const fs::path rendersDir = args.out / "renders";
-  fs::create_directories(headsDir);
-  fs::create_directories(rendersDir);
-  const std::vector<std::string> expressions = expressionPresetNames();
-  const std::vector<View> views = trainingViews();
-  const Scheme& scheme = Scheme::thesis25();
-
-  std::cerr << "demo: generating " << args.heads << " procedural heads\n";
+struct DemoHeads {
   std::vector<SynthHead> heads;
-  std::vector<DemoHeadFile> headFiles;
+  DatasetManifest manifest;  // the heads as scans, for the studio's annotate and train pages
+};
+
+DemoHeads makeHeads(const DemoArgs& args, const fs::path& headsDir) {
+  const std::vector<std::string> expressions = expressionPresetNames();
+  const Scheme& scheme = Scheme::thesis25();
+  std::cerr << "demo: generating " << args.heads << " procedural heads\n";
+  DemoHeads made;
+  made.manifest.name = "clm3d-demo-heads";
   for (int i = 0; i < args.heads; ++i) {
     const auto seed = static_cast<std::uint64_t>(i + 1);
     const std::string& expression = expressions[static_cast<std::size_t>(i) % expressions.size()];
-    heads.push_back(generateHead(seed, Expression::preset(expression)));
-    const fs::path stem = headsDir / ("head-" + std::to_string(seed));
-    saveObj(heads.back().mesh, stem.string() + ".obj");
-    writeLandmarks(stem.string() + ".ljson", heads.back().landmarks, scheme);
+    made.heads.push_back(generateHead(seed, Expression::preset(expression)));
     const std::string name = "head-" + std::to_string(seed);
-    headFiles.push_back({fs::path("heads") / (name + ".obj"), fs::path("heads") / (name + ".ljson"),
-                         name, expression});
+    const fs::path mesh = headsDir / (name + ".obj");
+    const fs::path landmarks = headsDir / (name + ".ljson");
+    saveObj(made.heads.back().mesh, mesh);
+    writeLandmarks(landmarks, made.heads.back().landmarks, scheme);
+    made.manifest.scans.push_back({fs::absolute(mesh), fs::absolute(landmarks), name, expression});
     std::cerr << "  head " << seed << " (" << expression
-              << "): " << heads.back().mesh.triangleCount() << " triangles -> " << stem.string()
-              << ".obj\n";
+              << "): " << made.heads.back().mesh.triangleCount() << " triangles -> "
+              << mesh.string() << "\n";
   }
+  return made;
+}
 
-  // Render every head from every view, one renderer per worker thread.
-  const int jobs = static_cast<int>(heads.size() * views.size());
-  const int threads = std::clamp(
-      args.threads > 0 ? args.threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-      16);
+// Every head from each of the model's training views (one renderer per head), the contact sheet
+// of them, and what the renders show about hidden points.
+void renderTrainingViews(const DemoArgs& args, const std::vector<SynthHead>& heads,
+                         const fs::path& rendersDir, const fs::path& sheet) {
+  const std::vector<ViewCentre> views = TrainSettings{}.views();
+  const int viewCount = static_cast<int>(views.size());
+  const int jobs = static_cast<int>(heads.size()) * viewCount;
   std::vector<RenderedView> rendered(static_cast<std::size_t>(jobs));
-  std::atomic<int> next{0};
-  std::atomic<int> done{0};
-  std::mutex errorMutex;
-  std::exception_ptr error;
+  DecileProgress progress = stderrProgress("rendered views");
+  std::mutex doneMutex;
+  int done = 0;
   const auto renderStart = std::chrono::steady_clock::now();
-  auto worker = [&] {
-    try {
-      int current = -1;
-      std::unique_ptr<OffscreenRenderer> renderer;
-      for (int job = next++; job < jobs; job = next++) {
-        const int head = job / static_cast<int>(views.size());
-        const View& view = views[static_cast<std::size_t>(job) % views.size()];
-        if (head != current) {
-          renderer = std::make_unique<OffscreenRenderer>(heads[static_cast<std::size_t>(head)].mesh,
-                                                         RenderOptions{2});
-          current = head;
-        }
-        const fs::path stem =
-            rendersDir / ("head-" + std::to_string(head + 1) + "_" + viewName(view));
-        rendered[static_cast<std::size_t>(job)] =
-            renderView(*renderer, heads[static_cast<std::size_t>(head)], view, args.size, stem);
-        const int finished = ++done;
-        if (finished * 10 / jobs != (finished - 1) * 10 / jobs) {
-          std::lock_guard lock(errorMutex);
-          std::cerr << "demo: rendered " << finished << "/" << jobs << " views\n";
-        }
+  parallelFor(static_cast<int>(heads.size()), args.threads, [&](int head) {
+    const SynthHead& subject = heads[static_cast<std::size_t>(head)];
+    OffscreenRenderer renderer(subject.mesh, RenderOptions{2});
+    for (int v = 0; v < viewCount; ++v) {
+      const ViewCentre& view = views[static_cast<std::size_t>(v)];
+      const fs::path stem =
+          rendersDir / ("head-" + std::to_string(head + 1) + "_" + viewName(view));
+      rendered[static_cast<std::size_t>(head * viewCount + v)] =
+          renderView(renderer, subject, view, args.size, stem);
+      double fraction = 0.0;
+      {
+        std::lock_guard lock(doneMutex);
+        fraction = static_cast<double>(++done) / jobs;
       }
-    } catch (...) {
-      std::lock_guard lock(errorMutex);
-      if (!error) error = std::current_exception();
-      next = jobs;
+      progress(fraction, {});
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
+  });
   const double renderSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
 
@@ -216,26 +181,30 @@ void runDemo(const DemoArgs& args) {
   std::vector<std::string> captions;
   for (int job = 0; job < jobs; ++job) {
     tiles.push_back(rendered[static_cast<std::size_t>(job)].overlay);
-    const View& view = views[static_cast<std::size_t>(job) % views.size()];
+    const ViewCentre& view = views[static_cast<std::size_t>(job % viewCount)];
     std::ostringstream caption;
-    caption << "head " << job / static_cast<int>(views.size()) + 1 << ": yaw " << view.yaw
-            << ", pitch " << view.pitch;
+    caption << "head " << job / viewCount + 1 << ": yaw " << view.yawDeg << ", pitch "
+            << view.pitchDeg;
     captions.push_back(caption.str());
   }
-  const fs::path sheet = args.out / "training-views.png";
-  writeImage(sheet, makeContactSheet(tiles, static_cast<int>(5), captions));
+  writeImage(sheet, makeContactSheet(tiles, 5, captions));
 
+  const int threads = workerCount(static_cast<int>(heads.size()), args.threads);
   std::cout << "demo: " << heads.size() << " heads, " << jobs << " renders at " << args.size << "x"
             << args.size << " in " << std::fixed << std::setprecision(2) << renderSeconds << " s ("
             << std::setprecision(1) << jobs / renderSeconds << " renders/s on " << threads
             << " threads)\n";
   std::cout << "hidden landmarks of head 1 per view (thesis hidden-point removal):\n";
-  for (std::size_t v = 0; v < views.size(); ++v) {
-    const auto& r = rendered[v];
-    std::cout << "  " << std::setw(16) << std::left << viewName(views[v]) << std::right << " "
-              << r.hidden << (r.hidden ? ": " + r.hiddenNames : "") << '\n';
+  for (int v = 0; v < viewCount; ++v) {
+    const auto& r = rendered[static_cast<std::size_t>(v)];
+    std::cout << "  " << std::setw(16) << std::left << viewName(views[static_cast<std::size_t>(v)])
+              << std::right << " " << r.hidden << (r.hidden ? ": " + r.hiddenNames : "") << '\n';
   }
-  // Train the multi-view model on the same heads (the thesis's chapter 3).
+}
+
+// The multi-view model trained on the heads (the thesis's chapter 3), saved with its report.
+ClmModel trainDemoModel(const DemoArgs& args, const std::vector<SynthHead>& heads,
+                        const fs::path& modelPath, const fs::path& reportDir) {
   TrainingInput input;
   input.schemeJson = schemeJsonFor("thesis25");
   input.datasetName = "clm3d demo: procedural heads 1-" + std::to_string(heads.size());
@@ -246,18 +215,13 @@ void runDemo(const DemoArgs& args) {
   }
   TrainSettings settings;
   settings.samplesPerView = args.samples;
-  settings.threads = threads;
+  settings.threads = args.threads;
   const auto trainStart = std::chrono::steady_clock::now();
-  int lastDecile = -1;
-  const ClmModel model = trainModel(input, settings, [&](double fraction, std::string_view stage) {
-    const int decile = static_cast<int>(fraction * 10.0);
-    if (decile == lastDecile) return;
-    lastDecile = decile;
-    std::cerr << "demo: training " << stage << " " << decile * 10 << "%\n";
-  });
-  const fs::path modelPath = args.out / "model.clm3d";
+  // trainModel reports from its worker threads: DecileProgress keeps its counter under a lock.
+  DecileProgress progress = stderrProgress("training");
+  ClmModel model = trainModel(input, settings, progress.callback());
+  fs::create_directories(modelPath.parent_path());
   saveModel(model, modelPath);
-  const fs::path reportDir = args.out / "report";
   fs::create_directories(reportDir);
   writeTrainingReport(model, reportDir);
   const double trainSeconds =
@@ -267,6 +231,87 @@ void runDemo(const DemoArgs& args) {
             << std::setprecision(1) << trainSeconds << " s: " << modelPath.string() << " ("
             << fs::file_size(modelPath) / 1000000.0 << " MB); report: " << reportDir.string()
             << '\n';
+  return model;
+}
+
+struct RealDemo {
+  fs::path model, video, tracks;
+};
+
+// --real's inputs, checked before the demo starts so a missing one fails at once.
+RealDemo findRealInputs(const DemoArgs& args) {
+  const std::optional<fs::path> data = sharedDataDir();
+  if (!data) {
+    throw InputError(
+        "demo --real: the shared data was not found (../shared/data beside the repository, or "
+        "set CLM3D_DATA); it holds the photos, scans and franck.mp4 the real demo uses");
+  }
+  RealDemo real;
+  real.video = *data / "videos" / "franck.mp4";
+  if (!fs::is_regular_file(real.video)) {
+    throw InputError("demo --real: " + real.video.string() + ": file not found");
+  }
+  if (!fs::is_regular_file(args.realManifest)) {
+    throw InputError("demo --real: " + args.realManifest.string() +
+                     ": dataset manifest not found (run from the repository's root, or give "
+                     "--real-manifest)");
+  }
+  real.model = project_layout::modelFile(args.out, "real");
+  return real;
+}
+
+// --real: the real-face model of the manifest (LFPW photos among its sources) and franck.mp4 of
+// the shared data tracked with it, into the same project, so the studio shows a real person too.
+RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
+  std::cerr << "demo: training the real-face model of " << args.realManifest.string()
+            << " (minutes)\n";
+  TrainSettings settings;
+  settings.textureMaxModes = 16;  // as docs/real-faces.md: 17 MB instead of 139 MB
+  settings.threads = args.threads;
+  const auto trainStart = std::chrono::steady_clock::now();
+  DecileProgress progress = stderrProgress("real-face training");
+  const ClmModel model =
+      trainFromManifest(args.realManifest, settings, CLM3D_VERSION, progress.callback());
+  fs::create_directories(real.model.parent_path());
+  saveModel(model, real.model);
+  std::cout << "demo: trained the real-face model in " << std::setprecision(1)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - trainStart).count()
+            << " s: " << real.model.string()
+            << "\n  LICENCE: it learnt from LFPW photos, which are for research use only (300-W "
+               "terms); the model inherits those terms: do not redistribute it or use it "
+               "commercially\n";
+
+  TrackerSettings tracking;
+  tracking.fit.optimiser = "rlms";
+  real.tracks = project_layout::tracksFile(args.out, real.video, real.model);
+  fs::create_directories(real.tracks.parent_path());
+  TrackTable tracks;
+  DecileProgress trackProgress = stderrProgress("franck.mp4");
+  const TrackSummary tracked =
+      trackVideo(real.video, model, tracking, tracks, {}, trackProgress.callback());
+  writeTrackTable(real.tracks, tracks);
+  std::cout << "demo: tracked " << tracked.frames << " frames of " << real.video.string()
+            << " with rlms (" << tracked.succeeded << " succeeded, " << tracked.detections
+            << " detections): " << real.tracks.string() << '\n';
+  return real;
+}
+
+void runDemo(const DemoArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<RealDemo> realInputs =
+      args.real ? std::optional<RealDemo>(findRealInputs(args)) : std::nullopt;
+  const fs::path headsDir = args.out / "heads";
+  const fs::path rendersDir = args.out / "renders";
+  fs::create_directories(headsDir);
+  fs::create_directories(rendersDir);
+  const Scheme& scheme = Scheme::thesis25();
+
+  const DemoHeads made = makeHeads(args, headsDir);
+  const fs::path sheet = args.out / "training-views.png";
+  renderTrainingViews(args, made.heads, rendersDir, sheet);
+  const fs::path modelPath = project_layout::modelFile(args.out, kModelName);
+  const fs::path reportDir = args.out / "report";
+  const ClmModel model = trainDemoModel(args, made.heads, modelPath, reportDir);
 
   // A held-out head turning frontal -> -60 -> +60 -> frontal (thesis section 5.2).
   std::cerr << "demo: rendering the test sequence of held-out head " << kHeldOutSeed << "\n";
@@ -292,7 +337,8 @@ void runDemo(const DemoArgs& args) {
   TrackerSettings tracking;
   tracking.fit.optimiser = args.optimiser;
   tracking.fit.scales = 2;
-  const fs::path tracksPath = args.out / "tracks.csv";
+  const fs::path tracksPath = project_layout::tracksFile(args.out, files.video, modelPath);
+  fs::create_directories(tracksPath.parent_path());
   const fs::path overlayPath = args.out / "overlay.mp4";
   VideoWriter overlay(overlayPath, sequence.width, sequence.height, sequence.fps);
   TrackTable tracks;
@@ -329,12 +375,21 @@ void runDemo(const DemoArgs& args) {
   project.folder = fs::absolute(args.out);
   project.name = "clm3d demo";
   // Absolute paths: a relative one would be taken as relative to the project folder.
-  project.manifest = fs::absolute(writeDemoManifest(args.out, headFiles));
+  project.manifest = fs::absolute(args.out / "dataset.json");
+  saveManifest(made.manifest, project.manifest);
   project.models = {fs::absolute(modelPath)};
   project.videos = {fs::absolute(files.video)};
   project.tracks = {fs::absolute(tracksPath)};
   project.groundTruth = {fs::absolute(files.truth)};
   saveProject(project);
+  if (realInputs) {
+    // The synthetic project is saved first, so a failed or interrupted real part leaves it whole.
+    const RealDemo real = runRealDemo(args, *realInputs);
+    project.models.push_back(fs::absolute(real.model));
+    project.videos.push_back(real.video);
+    project.tracks.push_back(fs::absolute(real.tracks));
+    saveProject(project);
+  }
 
   std::cout << "\n"
             << formatReportText(report) << "\nevaluation plots: " << evalDir.string()
@@ -371,6 +426,14 @@ void addDemoCommand(CLI::App& root) {
       ->check(CLI::Range(0.25, 20.0));
   command->add_option("--optimiser", args->optimiser, "Optimiser the tracker uses")
       ->default_val("fastncc");
+  command->add_flag("--real", args->real,
+                    "Also train the real-face model of --real-manifest (needs ../shared/data or "
+                    "$CLM3D_DATA; the model inherits LFPW's research-only terms) and track "
+                    "videos/franck.mp4 of the shared data with it into the same project");
+  command
+      ->add_option("--real-manifest", args->realManifest,
+                   "Dataset manifest of the real-face model (with --real)")
+      ->default_val("resources/datasets/real.json");
   command->callback([args] { runDemo(*args); });
 }
 

@@ -52,4 +52,8 @@ inline std::string backgroundName(AugmentationBackground background) {
   return background == AugmentationBackground::Clutter ? "clutter" : "none";
 }
 
+// Every field as a JSON object in the manifest's names ("background", "colour_jitter", ...), in
+// declaration order: how the manifest writer and the model's training settings store it.
+std::string augmentationJson(const AugmentationSettings& augmentation);
+
 }  // namespace clm3d

@@ -122,15 +122,7 @@ std::string TrainSettings::toJson() const {
   j["render_size"] = renderSize();
   j["greyscale"] = true;
   if (augmentation.any()) {  // absent when off, so models trained without it are unchanged
-    j["augmentation"] = {{"background", backgroundName(augmentation.background)},
-                         {"colour_jitter", augmentation.colourJitter},
-                         {"white_balance", augmentation.whiteBalance},
-                         {"blur_sigma_max", augmentation.blurSigmaMax},
-                         {"noise_sd", augmentation.noiseSd},
-                         {"jpeg_quality_min", augmentation.jpegQualityMin},
-                         {"light_angle_max", augmentation.lightAngleMaxDeg},
-                         {"shadows", augmentation.shadows},
-                         {"probability", augmentation.probability}};
+    j["augmentation"] = nlohmann::ordered_json::parse(augmentationJson(augmentation));
   }
   j["seed"] = seed;
   return j.dump(2);

@@ -17,8 +17,10 @@ TEST(DemoCli, RunsTheWholeChainAndEndsWithTheErrorSummary) {
   const auto result = test::runClm3d(
       "demo --heads 2 --samples 1 --size 64 --sequence-step 15 --out " + (dir / "demo").string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  for (const char* file : {"model.clm3d", "tracks.csv", "overlay.mp4", "sequence/truth.csv",
-                           "eval/report.json", "eval/cdf.png", "training-views.png"}) {
+  // The project layout of core/project: models/, tracks/<video>-<model>.csv.
+  for (const char* file :
+       {"models/demo.clm3d", "tracks/sequence-demo.csv", "overlay.mp4", "sequence/truth.csv",
+        "eval/report.json", "eval/cdf.png", "training-views.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "demo" / file)) << file;
   }
   const auto summary = result.output.find("error: mean");
@@ -31,10 +33,10 @@ TEST(DemoCli, RunsTheWholeChainAndEndsWithTheErrorSummary) {
   EXPECT_TRUE(std::filesystem::equivalent(project.folder, dir / "demo"));
   EXPECT_EQ(project.manifest, project.folder / "dataset.json");
   ASSERT_EQ(project.models.size(), 1u);
-  EXPECT_EQ(project.models[0], project.folder / "model.clm3d");
+  EXPECT_EQ(project.models[0], project.folder / "models" / "demo.clm3d");
   ASSERT_EQ(project.videos.size(), 1u);
   ASSERT_EQ(project.tracks.size(), 1u);
-  EXPECT_EQ(project.tracks[0], project.folder / "tracks.csv");
+  EXPECT_EQ(project.tracks[0], project.folder / "tracks" / "sequence-demo.csv");
   ASSERT_EQ(project.groundTruth.size(), 1u);
   EXPECT_EQ(project.groundTruth[0], project.folder / "sequence" / "truth.csv");
   for (const auto& file : {project.manifest, project.models[0], project.videos[0],
@@ -49,6 +51,19 @@ TEST(DemoCli, RunsTheWholeChainAndEndsWithTheErrorSummary) {
       std::filesystem::equivalent(manifest.scans[1].landmarks, dir / "demo/heads/head-2.ljson"));
   EXPECT_EQ(manifest.scans[0].subject, "head-1");
   EXPECT_EQ(manifest.scheme, "thesis25");
+}
+
+TEST(DemoCli, RealWithoutTheSharedDataFailsAtOnceNamingWhatIsMissing) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir / "empty-data");
+  const auto result = test::runCommand("CLM3D_DATA=" + (dir / "empty-data").string() + " " +
+                                       (test::binaryDir() / "bin" / "clm3d").string() +
+                                       " demo --real --out " + (dir / "demo").string());
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("franck.mp4"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("file not found"), std::string::npos) << result.output;
+  // Nothing was started: no heads, no project.
+  EXPECT_FALSE(std::filesystem::exists(dir / "demo" / "heads"));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtCharts/QChartView>
+#include <utility>
 
 #include "core/common/error.hpp"
 #include "core/project/project.hpp"
@@ -163,8 +164,13 @@ EvaluatePage::EvaluatePage(QWidget* parent) : Page(parent), runner_(new JobRunne
   connect(runner_, &JobRunner::cancelled, this,
           [this] { status_->setText("Evaluation cancelled."); });
   connect(runner_, &JobRunner::failed, this, [this](const QString& message) {
-    clearReport("Evaluation failed.");
-    showError(this, "Evaluation failed", message);
+    if (openingRun_) {
+      // Nobody asked for the evaluation the page starts when a project opens: no dialog.
+      clearReport("The project's files could not be evaluated: " + message);
+    } else {
+      clearReport("Evaluation failed.");
+      showError(this, "Evaluation failed", message);
+    }
     emit evaluationFailed(message);
   });
   connect(runner_, &JobRunner::ended, this, [this] { setRunning(false); });
@@ -176,8 +182,14 @@ EvaluatePage::~EvaluatePage() = default;  // the runner (a child) cancels and wa
 
 void EvaluatePage::setProject(Project* project) {
   inputs_->setProject(project);
-  if (!isBusy())
+  if (!isBusy()) {
     clearReport("Choose a ground truth and the predictions to compare, then press Evaluate.");
+    // A project with a ground truth and tracks (the demo's) opens with their evaluation shown.
+    if (project != nullptr && inputs_->isComplete()) {
+      openingRun_ = true;
+      evaluate();
+    }
+  }
 }
 
 bool EvaluatePage::isBusy() const {
@@ -186,6 +198,7 @@ bool EvaluatePage::isBusy() const {
 
 bool EvaluatePage::evaluate() {
   if (isBusy()) return false;
+  const bool opening = std::exchange(openingRun_, false);
   if (!inputs_->isComplete()) {
     status_->setText("Choose a ground truth and check at least one prediction.");
     return false;
@@ -194,6 +207,7 @@ bool EvaluatePage::evaluate() {
                             inputs_->threshold()};
   auto result = std::make_shared<EvaluationReport>();
   pending_ = result;
+  openingRun_ = opening;
   const bool started = runner_->start(
       "evaluate", [request, result](const ProgressCallback& progress, CancelToken& cancel) {
         *result = runEvaluation(request, progress, cancel);

@@ -37,6 +37,8 @@ class EvaluatePage : public Page {
   ~EvaluatePage() override;
 
   QString title() const override { return QStringLiteral("Evaluate"); }
+  // Shows the project's ground truth and tracks as the inputs and, when both exist, starts their
+  // evaluation at once (a failure then goes to the status line, not a dialog).
   void setProject(Project* project) override;
   bool isBusy() const override;
 
@@ -90,6 +92,7 @@ class EvaluatePage : public Page {
   JobRunner* runner_ = nullptr;
   std::shared_ptr<EvaluationReport> pending_;  // written by the job, read when it has finished
   std::optional<EvaluationReport> report_;
+  bool openingRun_ = false;  // the running evaluation is the one started when the project opened
 };
 
 }  // namespace clm3d::ui

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include "core/project/project.hpp"
+#include "core/project/project_layout.hpp"
 
 namespace clm3d::ui {
 namespace {
@@ -101,7 +102,16 @@ void EvaluationInputs::setProject(const Project* project) {
   if (project != nullptr) {
     for (const auto& file : project->groundTruth) setGroundTruth(project->resolve(file));
     if (!project->groundTruth.empty()) truth_->setCurrentIndex(0);
-    for (const auto& file : project->tracks) addPrediction(project->resolve(file), true);
+    // Checked: the tracks of the video the ground truth is of (core/project/project_layout.hpp),
+    // so another video's track (the demo's franck.mp4) is not scored against this truth.
+    const std::filesystem::path truthVideo = project->groundTruth.empty()
+                                                 ? std::filesystem::path()
+                                                 : videoOf(*project, project->groundTruth.front());
+    for (const auto& file : project->tracks) {
+      const std::filesystem::path video = videoOf(*project, file);
+      addPrediction(project->resolve(file),
+                    truthVideo.empty() || video.empty() || video == truthVideo);
+    }
   }
   emit changed();
 }

@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QImage>
@@ -24,6 +25,26 @@ constexpr int kExitBadInput = 1;
 constexpr int kExitBadUsage = 2;
 // Long enough for VTK widgets to render their first frame after the window is exposed.
 constexpr int kScreenshotSettleMs = 1500;
+// Longest wait for the pages' jobs started by opening the project (the Evaluate page's
+// evaluation) before the screenshot is taken anyway.
+constexpr int kScreenshotBusyLimitMs = 120000;
+
+// Runs events until no page of the window is busy, or limitMs passes.
+void waitForIdlePages(const MainWindow& window, int limitMs) {
+  const auto busy = [&window] {
+    for (const Page* page : window.pages()) {
+      if (page->isBusy()) return true;
+    }
+    return false;
+  };
+  QElapsedTimer clock;
+  clock.start();
+  while (busy() && clock.elapsed() < limitMs) {
+    QEventLoop wait;
+    QTimer::singleShot(20, &wait, &QEventLoop::quit);
+    wait.exec();
+  }
+}
 
 void addOptions(QCommandLineParser& parser) {
   parser.setApplicationDescription(
@@ -175,6 +196,7 @@ int runStudio(const StudioOptions& options) {
       }
     }
     window.show();
+    waitForIdlePages(window, kScreenshotBusyLimitMs);
     QString error;
     if (!saveWindowScreenshot(window, options.screenshot, &error)) {
       printError(error);

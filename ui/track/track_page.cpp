@@ -21,6 +21,7 @@
 #include "core/fit/fitter.hpp"
 #include "core/project/autosave.hpp"
 #include "core/project/project.hpp"
+#include "core/project/project_layout.hpp"
 #include "core/track/ground_truth.hpp"
 #include "core/track/track_table.hpp"
 #include "core/track/tracker.hpp"
@@ -28,6 +29,7 @@
 #include "ui/common/job_runner.hpp"
 #include "ui/common/mat_image.hpp"
 #include "ui/project/studio_settings.hpp"
+#include "ui/track/compared_points.hpp"
 #include "ui/track/frame_source.hpp"
 #include "ui/track/frame_view.hpp"
 #include "ui/track/landmark_marks.hpp"
@@ -35,6 +37,7 @@
 #include "ui/track/review_overlay.hpp"
 #include "ui/track/review_panel.hpp"
 #include "ui/track/timeline_widget.hpp"
+#include "ui/track/track_files_panel.hpp"
 #include "ui/track/track_jobs.hpp"
 #include "ui/track/truth_commands.hpp"
 
@@ -174,6 +177,9 @@ void TrackPage::buildLayout() {
   side->addWidget(review);
   side->addWidget(truthBox);
   buildLoopControls(top, side);
+  trackFiles_ = new TrackFilesPanel(this);  // review of existing files: track_page_review.cpp
+  side->addWidget(trackFiles_);
+  connectTrackFiles();
   side->addStretch(1);
 
   auto* middle = new QHBoxLayout;
@@ -263,6 +269,7 @@ void TrackPage::setProject(Project* project) {
     overlayFitter_.reset();
     modelPath_.clear();
     tracksCsv_.clear();
+    comparedCsv_.clear();
     current_ = 0;
     refreshTimeline();
     showFrame();
@@ -298,6 +305,7 @@ void TrackPage::fillProjectLists() {
   };
   fill(videoCombo_, project_ ? project_->videos : std::vector<fs::path>{}, session_.video().path);
   fill(modelCombo_, project_ ? project_->models : std::vector<fs::path>{}, modelPath_);
+  refreshTrackFiles();
 }
 
 bool TrackPage::hasUnsavedChanges() const {
@@ -316,9 +324,7 @@ double TrackPage::longestDecodeMs() const {
 fs::path TrackPage::groundTruthCsv() const {
   const fs::path& video = session_.video().path;
   if (video.empty()) return {};
-  const std::string name = video.stem().string();
-  const fs::path base = project_ ? project_->folder : video.parent_path();
-  return base / "ground-truth" / name / (name + ".csv");
+  return project_layout::groundTruthFile(project_ ? project_->folder : fs::path(), video);
 }
 
 bool TrackPage::openVideo(const fs::path& video) {
@@ -342,6 +348,7 @@ bool TrackPage::openVideo(const fs::path& video) {
   undo_.clear();
   autosavedIndex_ = -1;
   tracksCsv_.clear();
+  comparedCsv_.clear();
   current_ = 0;
   if (project_ && project_->addUnique(project_->videos, video)) emit projectModified();
   // A ground truth saved for this video before is opened for further correction.
@@ -352,6 +359,7 @@ bool TrackPage::openVideo(const fs::path& video) {
     runReportingErrors(this, tr("Opening the ground truth failed"),
                        [&] { session_.setTruth(loadGroundTruth(csv)); });
   }
+  openTracksOfVideo();  // the project's track of this video, without tracking again
   resetOverlayFitter();
   player_->setFps(session_.video().fps);
   fillProjectLists();
@@ -510,14 +518,14 @@ void TrackPage::onJobEnded() {
 void TrackPage::saveTracks() {
   if (!project_) return;
   const fs::path path =
-      project_->folder / "tracks" /
-      (session_.video().path.stem().string() + "-" + modelPath_.stem().string() + ".csv");
+      project_layout::tracksFile(project_->folder, session_.video().path, modelPath_);
   runReportingErrors(this, tr("Saving the tracks failed"), [&] {
     fs::create_directories(path.parent_path());
     writeTrackTable(path, session_.track());
     tracksCsv_ = path;
     if (project_->addUnique(project_->tracks, path)) emit projectModified();
   });
+  refreshTrackFiles();
 }
 
 bool TrackPage::save() {
@@ -561,6 +569,8 @@ bool TrackPage::autosave() {
 bool TrackPage::compareWith(const fs::path& reference) {
   return runReportingErrors(this, tr("Opening the ground truth failed"), [&] {
     session_.setReference(readTrackTable(reference));
+    comparedCsv_ = reference;
+    refreshTrackFiles();
     refreshTimeline();
     showFrame();
   });
@@ -644,6 +654,8 @@ void TrackPage::showFrame() {
                  std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
                      .count());
   }
+  if (session_.reference() && trackFiles_->overlayShown())
+    drawn = withComparedPoints(drawn, *session_.reference(), current_);  // the compared track
   frameView_->setImage(toQImage(drawn));
 
   std::vector<QColor> colours;
@@ -692,7 +704,12 @@ void TrackPage::showFrame() {
                      .arg(current_)
                      .arg(count)
                      .arg(view, confidence, status);
-  if (std::isfinite(error)) text += tr("<br>Error vs ground truth: %1").arg(error, 0, 'f', 3);
+  if (std::isfinite(error)) {
+    const QString against = comparedCsv_.empty()
+                                ? tr("keyframes")
+                                : QString::fromStdString(comparedCsv_.filename().string());
+    text += tr("<br>Difference to %1: %2").arg(against).arg(error, 0, 'f', 3);
+  }
   if (keyframe) text += tr("<br><span style='color:#b8860b'><b>Keyframe</b></span>");
   infoLabel_->setText(text);
   frameView_->setLabel(tr("frame %1   view %2   confidence %3%4")
@@ -730,6 +747,7 @@ void TrackPage::updateControls() {
   saveButton_->setEnabled(!busy && session_.truth().table.landmarkCount > 0);
   compareButton_->setEnabled(!busy && session_.hasVideo());
   exportButton_->setEnabled(!busy && tracked);
+  trackFiles_->setActionsEnabled(!busy && session_.hasVideo());
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];
   keyframeButton_->setText(keyframe ? tr("Clear keyframe (K)") : tr("Mark keyframe (K)"));

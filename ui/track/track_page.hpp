@@ -36,6 +36,7 @@ class PlayerBar;
 class ReviewPanel;
 class TimelineWidget;
 struct LoopOutcome;
+class TrackFilesPanel;
 struct TrackOutcome;
 struct RetrackOutcome;
 
@@ -61,6 +62,14 @@ class TrackPage : public Page {
   bool retrackFromCurrentFrame();
   bool exportOverlay(const std::filesystem::path& out);
   bool compareWith(const std::filesystem::path& reference);
+  // Review what exists (ui/track/track_files_panel.hpp): loads a tracks or ground-truth CSV as the
+  // video's track without tracking (keyframed corrections stay; one undo step when there is
+  // history). A file that cannot be read, or has frames beyond the video, shows the error dialog
+  // naming it and changes nothing.
+  bool loadTrack(const std::filesystem::path& csv);
+  // The CSV the track is compared with (empty if none) and the panel listing the video's files.
+  const std::filesystem::path& comparedCsv() const { return comparedCsv_; }
+  TrackFilesPanel* trackFiles() { return trackFiles_; }
   void toggleKeyframe();
   int interpolateKeyframes();
   void setCurrentFrame(int frame);
@@ -132,6 +141,12 @@ class TrackPage : public Page {
   void chooseModel();
   void chooseReference();
   void chooseExport();
+  // Review of existing files (track_page_review.cpp).
+  void connectTrackFiles();
+  void openTracksOfVideo();
+  void refreshTrackFiles();
+  void chooseTracksFile();
+  void loadModelForReview();
 
   Project* project_ = nullptr;
   TrackSession session_;
@@ -175,6 +190,8 @@ class TrackPage : public Page {
   std::shared_ptr<LoopOutcome> loopOutcome_;
   int pendingLoopFrame_ = -1;
   int loopRetracks_ = 0;
+  TrackFilesPanel* trackFiles_ = nullptr;
+  std::filesystem::path comparedCsv_;
 };
 
 }  // namespace clm3d::ui

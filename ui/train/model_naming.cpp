@@ -1,11 +1,11 @@
 #include "ui/train/model_naming.hpp"
 
-#include "core/common/error.hpp"
+#include "core/project/project_layout.hpp"
 
 namespace clm3d::ui {
 
 std::filesystem::path modelsFolder(const std::filesystem::path& projectFolder) {
-  return projectFolder / "models";
+  return project_layout::modelsFolder(projectFolder);
 }
 
 QString defaultModelName(const std::filesystem::path& projectFolder, const QDateTime& when) {
@@ -19,14 +19,7 @@ QString defaultModelName(const std::filesystem::path& projectFolder, const QDate
 
 std::filesystem::path modelPathFor(const std::filesystem::path& projectFolder,
                                    const QString& name) {
-  QString stem = name.trimmed();
-  if (stem.endsWith(".clm3d", Qt::CaseInsensitive)) stem.chop(6);
-  if (stem.isEmpty()) throw InputError("model name: enter a name for the model file");
-  if (stem.contains('/') || stem.contains('\\') || stem.startsWith('.')) {
-    throw InputError("model name '" + name.toStdString() +
-                     "': use a plain file name (no folders, not starting with a dot)");
-  }
-  return modelsFolder(projectFolder) / (stem.toStdString() + ".clm3d");
+  return project_layout::modelFile(projectFolder, name.toStdString());
 }
 
 }  // namespace clm3d::ui

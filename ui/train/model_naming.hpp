@@ -1,6 +1,7 @@
-// Where the training page saves a model: <project>/models/<name>.clm3d, the name checked (one file
-// name, no folders) and a default made from the date and time that does not collide with a model
-// already there, so a new run never replaces an earlier model silently.
+// Where the training page saves a model: <project>/models/<name>.clm3d (the project layout of
+// core/project/project_layout.hpp, which checks the name), and a default name made from the date
+// and time that does not collide with a model already there, so a new run never replaces an
+// earlier model silently.
 #pragma once
 
 #include <QDateTime>
