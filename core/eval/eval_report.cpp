@@ -40,7 +40,8 @@ json sequenceJson(const SequenceEvaluation& sequence) {
                         {"predicted", frame.predicted},
                         {"success", frame.success},
                         {"converged", frame.converged},
-                        {"error", number(frame.error)}});
+                        {"error", number(frame.error)},
+                        {"jitter", number(frame.jitter)}});
   }
   return {{"label", sequence.label},
           {"file", sequence.source},
@@ -64,6 +65,10 @@ json sequenceJson(const SequenceEvaluation& sequence) {
             {"within_threshold", s.foundPoints},
             {"share_within_threshold", number(s.withinThreshold)}}},
           {"mean_point_error", number(s.meanPointError)},
+          {"motion",
+           {{"jitter", number(s.jitter)},
+            {"jitter_frames", s.jitterFrames},
+            {"lag_frames", number(s.lagFrames)}}},
           {"regions", regions},
           {"cdf", cdf},
           {"per_frame", perFrame}};
@@ -106,6 +111,10 @@ std::string fixed(double v, int decimals) {
 
 std::string formatErrorValue(double v) {
   return std::isfinite(v) ? fixed(v, 4) : std::string("n/a");
+}
+
+std::string formatFrames(double frames) {
+  return std::isfinite(frames) ? fixed(frames, 2) : std::string("n/a");
 }
 
 std::string formatShare(double share) {
@@ -236,6 +245,9 @@ std::string formatReportText(const EvaluationReport& report) {
     for (const auto& region : s.regions)
       out += " " + region.name + " " + formatErrorValue(region.mean);
     out += ", all " + formatErrorValue(s.meanPointError) + "\n";
+    out += "  motion: jitter " + formatErrorValue(s.jitter) + " over " +
+           std::to_string(s.jitterFrames) + " frame pairs, lag " + formatFrames(s.lagFrames) +
+           " frames\n";
   }
   const std::string comparison = formatComparison(report);
   if (!comparison.empty()) out += "\n" + comparison + "\n";

@@ -45,16 +45,18 @@ EvaluationReport evaluateTrackFiles(const std::filesystem::path& truth,
 
 // {"format": "clm3d-evaluation", "version": 1, "scheme", "truth", "threshold", "predictions": [
 // {"label", "file", "frames": {...}, "error": {mean, median, sd, min, max}, "convergence_rate",
-// "points_within_threshold", "mean_point_error", "regions": [...], "cdf": [...], "per_frame":
-// [{"frame", "error", "success", "converged"}]}], "comparison": {...} or null}. NaN is null.
+// "points_within_threshold", "mean_point_error", "motion": {"jitter", "jitter_frames",
+// "lag_frames"}, "regions": [...], "cdf": [...], "per_frame": [{"frame", "error", "success",
+// "converged", "jitter"}]}], "comparison": {...} or null}. NaN is null.
 std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
 
 // The numbers of the text report as strings (locale-independent), for every view that shows
-// them (the studio's table), so a figure reads the same everywhere: errors with four decimals,
-// shares as percentages with one, p-values fixed or scientific; "n/a" when not finite.
+// them (the studio's table), so a figure reads the same everywhere: errors (and jitter) with four
+// decimals, shares as percentages with one, p-values fixed or scientific; "n/a" when not finite.
 std::string formatErrorValue(double value);
+std::string formatFrames(double frames);  // two decimals (a lag in frames)
 std::string formatShare(double share);
 std::string formatPValue(double p);
 // The report's significance-test line (Welch's t-test, one-way ANOVA, or why there is none),
@@ -62,7 +64,7 @@ std::string formatPValue(double p);
 std::string formatComparison(const EvaluationReport& report);
 
 // A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
-// threshold, per-region means; then the test.
+// threshold, per-region means, jitter and lag; then the test.
 std::string formatReportText(const EvaluationReport& report);
 
 }  // namespace clm3d

@@ -48,6 +48,49 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
   return result;
 }
 
+// Jitter of every frame whose previous frame is in the truth too and succeeded in both, and the
+// summary's jitter and lag (landmark_error.hpp). truth: rows in frame order, matching `frames`.
+void measureMotion(const TrackTable& truth,
+                   const std::unordered_map<int, const TrackRow*>& predictionOf,
+                   std::vector<FrameError>& frames, ErrorSummary& summary) {
+  const auto succeeded = [&](int frame) -> const TrackRow* {
+    const auto it = predictionOf.find(frame);
+    return it != predictionOf.end() && it->second->success ? it->second : nullptr;
+  };
+  double jitterSum = 0.0;
+  double alongMotion = 0.0;  // sum of (p_t - g_t) . (g_t - g_t-1)
+  double motionSquared = 0.0;
+  for (std::size_t f = 1; f < frames.size(); ++f) {
+    const TrackRow& now = truth.rows[f];
+    const TrackRow& before = truth.rows[f - 1];
+    FrameError& frame = frames[f];
+    if (before.frame != now.frame - 1 || !frame.normalised) continue;
+    const TrackRow* predicted = succeeded(now.frame);
+    const TrackRow* previous = succeeded(before.frame);
+    if (predicted == nullptr || previous == nullptr) continue;
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < static_cast<int>(now.points.cols()); ++i) {
+      if (!hasPoint(now.points, i) || !hasPoint(before.points, i) ||
+          !hasPoint(predicted->points, i) || !hasPoint(previous->points, i)) {
+        continue;
+      }
+      const Eigen::Vector2d truthMotion = now.points.col(i) - before.points.col(i);
+      const Eigen::Vector2d motion = predicted->points.col(i) - previous->points.col(i);
+      sum += (motion - truthMotion).norm() / frame.interOcular;
+      alongMotion += (predicted->points.col(i) - now.points.col(i)).dot(truthMotion);
+      motionSquared += truthMotion.squaredNorm();
+      ++count;
+    }
+    if (count == 0) continue;
+    frame.jitter = sum / count;
+    jitterSum += frame.jitter;
+    ++summary.jitterFrames;
+  }
+  if (summary.jitterFrames > 0) summary.jitter = jitterSum / summary.jitterFrames;
+  if (motionSquared > 1e-12) summary.lagFrames = -alongMotion / motionSquared;
+}
+
 ErrorSummary summarise(const std::vector<FrameError>& frames, const TrackTable& truth,
                        const Scheme& scheme, const EvalOptions& options) {
   ErrorSummary s;
@@ -172,6 +215,7 @@ SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& p
     result.frames.push_back(frameError(row, predicted, scheme, options));
   }
   result.summary = summarise(result.frames, sortedTruth, scheme, options);
+  measureMotion(sortedTruth, predictionOf, result.frames, result.summary);
   result.summary.extraPredictionRows = static_cast<int>(prediction.rows.size()) - matched;
   if (result.summary.normalisedFrames == 0) {
     const auto [first, second] = scheme.normalisationPair();

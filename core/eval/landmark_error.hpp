@@ -6,6 +6,7 @@
 // every choice.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct FrameError {
   double error = 0.0;
   // Per landmark, NaN where the truth or the prediction lacks the point.
   std::vector<double> pointErrors;
+  // Motion of the prediction since the previous frame not explained by the truth's: the mean
+  // over points of |(p_t - p_t-1) - (g_t - g_t-1)| / interOcular. NaN unless the truth has the
+  // previous frame (frame - 1) and the prediction succeeded in both.
+  double jitter = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RegionError {
@@ -62,11 +67,18 @@ struct ErrorSummary {
   int extraPredictionRows = 0;  // prediction rows for frames the truth does not have (ignored)
   // Frame errors of the scored frames.
   double mean = 0.0, median = 0.0, sd = 0.0, min = 0.0, max = 0.0;
-  double convergenceRate = 0.0;      // convergedFrames / normalisedFrames
-  int truePoints = 0;                // points present in the truth over normalised frames
-  int foundPoints = 0;               // of those, predicted with error <= threshold
-  double withinThreshold = 0.0;      // foundPoints / truePoints
-  double meanPointError = 0.0;       // mean of every pooled point error (figure 5.13's line)
+  double convergenceRate = 0.0;  // convergedFrames / normalisedFrames
+  int truePoints = 0;            // points present in the truth over normalised frames
+  int foundPoints = 0;           // of those, predicted with error <= threshold
+  double withinThreshold = 0.0;  // foundPoints / truePoints
+  double meanPointError = 0.0;   // mean of every pooled point error (figure 5.13's line)
+  // Mean of the frames' jitter (NaN when no frame has one) and how many frames had one.
+  double jitter = std::numeric_limits<double>::quiet_NaN();
+  int jitterFrames = 0;
+  // How many frames the prediction trails the truth by: the least-squares L in
+  // p_t - g_t = -L (g_t - g_t-1) over the points of the frames with a jitter; 0 for a prediction
+  // without lag, about 1 for one a frame late, NaN when the truth does not move.
+  double lagFrames = std::numeric_limits<double>::quiet_NaN();
   std::vector<RegionError> regions;  // in scheme order
   std::vector<CdfSample> cdf;
 };

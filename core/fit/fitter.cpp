@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <utility>
 
 #include "core/common/error.hpp"
 #include "core/fit/response_map.hpp"
@@ -149,11 +151,11 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
   problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
   problem_.synthesiseTemplates(p);
-  result.confidence =
-      optimiser_->usesExperts()
-          ? meanExpertResponse(problem_.image(), problem_.projector(), finest.experts,
-                               finest.patchSize, p)
-          : problem_.meanNcc(p);
+  Eigen::VectorXd perLandmark(problem_.landmarkCount());
+  result.confidence = optimiser_->usesExperts()
+                          ? expertResponses(problem_.image(), problem_.projector(), finest.experts,
+                                            finest.patchSize, p, perLandmark)
+                          : problem_.landmarkNcc(p, perLandmark);
   lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
   for (int k = 0; k < problem_.landmarkCount(); ++k) {
     lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);
@@ -165,8 +167,14 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   result.points = project(state);
   result.view = view;
   result.modelled.assign(static_cast<std::size_t>(model_->shape.pointCount()), false);
-  for (const int landmark : finest.landmarks) {
-    result.modelled[static_cast<std::size_t>(landmark)] = true;
+  result.landmarkConfidence.assign(static_cast<std::size_t>(model_->shape.pointCount()),
+                                   std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < finest.landmarks.size(); ++k) {
+    const auto landmark = static_cast<std::size_t>(finest.landmarks[k]);
+    result.modelled[landmark] = true;
+    if (std::cmp_less(k, perLandmark.size())) {
+      result.landmarkConfidence[landmark] = perLandmark[static_cast<Eigen::Index>(k)];
+    }
   }
   return result;
 }

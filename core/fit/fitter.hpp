@@ -42,8 +42,12 @@ struct FitResult {
   // Template optimisers: mean NCC at the finest scale searched, in [-1, 1]. rlms: the experts'
   // mean response at the final points (finest scale), in (0, 1).
   double confidence = 0.0;
-  bool converged = false;   // the finest scale met the tolerance within maxIterations
-  int iterations = 0;       // over all scales
+  // The same measure per scheme landmark (the NCC of its patch, or its expert's response); NaN
+  // for the landmarks the final view does not model. Their mean over the modelled ones is
+  // `confidence`.
+  std::vector<double> landmarkConfidence;
+  bool converged = false;  // the finest scale met the tolerance within maxIterations
+  int iterations = 0;      // over all scales
 };
 
 class Fitter {

@@ -106,23 +106,23 @@ double faceInPlaneAngle(const ShapeProjector& projector,
   return inPlaneRotation(upright, turned);
 }
 
-double meanExpertResponse(const cv::Mat& image, const ShapeProjector& projector,
-                          const std::vector<PatchExpert>& experts, int patchSize,
-                          const Eigen::Ref<const Eigen::VectorXd>& p) {
+double expertResponses(const cv::Mat& image, const ShapeProjector& projector,
+                       const std::vector<PatchExpert>& experts, int patchSize,
+                       const Eigen::Ref<const Eigen::VectorXd>& p, Eigen::VectorXd& responses) {
   const int m = projector.landmarkCount();
+  responses.setZero(m);
   if (m == 0 || static_cast<int>(experts.size()) != m) return 0.0;
   Eigen::Matrix2Xd points(2, m);
   projector.project(p, points);
   const double angle = faceInPlaneAngle(projector, p);
   cv::Mat region;
   cv::Mat response;
-  double sum = 0.0;
   for (int k = 0; k < m; ++k) {
     sampleRegion(image, points.col(k), angle, patchSize, region);
     expertResponse(region, experts[static_cast<std::size_t>(k)], patchSize, response);
-    sum += response.at<float>(0, 0);
+    responses[k] = response.at<float>(0, 0);
   }
-  return sum / m;
+  return responses.mean();
 }
 
 }  // namespace clm3d

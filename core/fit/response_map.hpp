@@ -41,11 +41,13 @@ double inPlaneRotation(const Eigen::Matrix2Xd& upright, const Eigen::Matrix2Xd& 
 double faceInPlaneAngle(const ShapeProjector& projector,
                         const Eigen::Ref<const Eigen::VectorXd>& p);
 
-// The experts' mean response at the projector's points of p, each at offset 0 in the face's
-// upright frame: the probability that the landmarks are where p puts them, in (0, 1).
-double meanExpertResponse(const cv::Mat& image, const ShapeProjector& projector,
-                          const std::vector<PatchExpert>& experts, int patchSize,
-                          const Eigen::Ref<const Eigen::VectorXd>& p);
+// The experts' response per landmark at the projector's points of p (the projector's order), each
+// at offset 0 in the face's upright frame, into `responses` (resized to the landmark count): the
+// probability that each landmark is where p puts it, in (0, 1). Returns their mean (0 when there
+// is none or the experts do not match the projector).
+double expertResponses(const cv::Mat& image, const ShapeProjector& projector,
+                       const std::vector<PatchExpert>& experts, int patchSize,
+                       const Eigen::Ref<const Eigen::VectorXd>& p, Eigen::VectorXd& responses);
 
 // The rotation of sampleRegion's frame: a vector (dx, dy) in the region is Rot(angle) (dx, dy)
 // in the image.

@@ -46,7 +46,8 @@ void markAsReference(TrackRow& row) {
   row.confidence = 1.0;
   row.view = -1;
   row.pose.reset();
-  row.visibility.clear();  // the fit's visibility does not describe a person's points
+  row.visibility.clear();          // the fit's visibility does not describe a person's points
+  row.landmarkConfidence.clear();  // nor do its confidences
 }
 
 // Seconds of frame `frame` from the first and last rows with finite timestamps; NaN without two.

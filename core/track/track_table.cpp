@@ -18,6 +18,7 @@ namespace clm3d {
 namespace {
 
 constexpr const char* kVisiblePrefix = "visible_";
+constexpr const char* kConfidencePrefix = "conf_";
 constexpr std::array<const char*, 7> kPoseColumns = {"tx",    "ty",  "tz",  "scale",
                                                      "pitch", "yaw", "roll"};
 
@@ -115,12 +116,15 @@ bool isTrackerColumn(const std::string& name, int landmarkCount) {
   for (const char* pose : kPoseColumns) {
     if (name == pose) return true;
   }
-  // x_i / y_i / visible_i with i in 1..landmarkCount, written without sign or leading zero.
+  // x_i / y_i / visible_i / conf_i with i in 1..landmarkCount, written without sign or leading
+  // zero.
   std::string_view index = name;
   if (index.starts_with("x_") || index.starts_with("y_")) {
     index.remove_prefix(2);
   } else if (index.starts_with(kVisiblePrefix)) {
     index.remove_prefix(std::string_view(kVisiblePrefix).size());
+  } else if (index.starts_with(kConfidencePrefix)) {
+    index.remove_prefix(std::string_view(kConfidencePrefix).size());
   } else {
     return false;
   }
@@ -168,6 +172,12 @@ std::string formatTrackTable(const TrackTable& table) {
   if (withVisibility) {
     for (int i = 1; i <= n; ++i) out += "," + std::string(kVisiblePrefix) + std::to_string(i);
   }
+  const bool withConfidence =
+      std::any_of(table.rows.begin(), table.rows.end(),
+                  [](const TrackRow& row) { return !row.landmarkConfidence.empty(); });
+  if (withConfidence) {
+    for (int i = 1; i <= n; ++i) out += "," + std::string(kConfidencePrefix) + std::to_string(i);
+  }
   checkExtraColumns(table);
   for (const auto& name : table.extraColumns) out += ',' + name;
   out += '\n';
@@ -181,6 +191,11 @@ std::string formatTrackTable(const TrackTable& table) {
       throw Error("track table: frame " + std::to_string(row.frame) + " has " +
                   std::to_string(row.visibility.size()) + " visibility flags, expected " +
                   std::to_string(n));
+    }
+    if (!row.landmarkConfidence.empty() && std::cmp_not_equal(row.landmarkConfidence.size(), n)) {
+      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                  std::to_string(row.landmarkConfidence.size()) +
+                  " landmark confidences, expected " + std::to_string(n));
     }
     out += std::to_string(row.frame);
     out += ',';
@@ -217,6 +232,14 @@ std::string formatTrackTable(const TrackTable& table) {
                                     ? Visibility::Unknown
                                     : row.visibility[static_cast<std::size_t>(i)];
         out += flag == Visibility::Visible ? ",1" : flag == Visibility::Hidden ? ",0" : ",";
+      }
+    }
+    if (withConfidence) {
+      for (int i = 0; i < n; ++i) {
+        out += ',';
+        if (!row.landmarkConfidence.empty()) {
+          appendGeneral(out, row.landmarkConfidence[static_cast<std::size_t>(i)], 6);
+        }
       }
     }
     if (row.extraCells.size() > table.extraColumns.size()) {
@@ -323,6 +346,18 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
     }
   }
 
+  // Landmark confidences: conf_1..conf_n, all or none (older tables have none).
+  std::vector<int> confidenceColumns;
+  bool anyConfidence = false;
+  for (int i = 1; i <= n && !anyConfidence; ++i) {
+    anyConfidence = find(kConfidencePrefix + std::to_string(i)) >= 0;
+  }
+  if (anyConfidence) {
+    for (int i = 0; i < n; ++i) {
+      confidenceColumns.push_back(require(kConfidencePrefix + std::to_string(i + 1)));
+    }
+  }
+
   TrackTable table;
   table.landmarkCount = n;
   // Every named column the table does not use is kept as text.
@@ -400,6 +435,9 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
       row.points(1, i) = y;
     }
     for (const int column : visibleColumns) row.visibility.push_back(reader.visibility(column));
+    for (const int column : confidenceColumns) {
+      row.landmarkConfidence.push_back(reader.number(column));
+    }
     for (const int column : extraColumns) row.extraCells.emplace_back(reader.cell(column));
     table.rows.push_back(std::move(row));
   }

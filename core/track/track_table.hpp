@@ -32,6 +32,10 @@ struct TrackRow {
   // Per landmark (n entries), or empty: unknown for every landmark (no fit, a reference frame, or
   // a table without visible_k columns).
   std::vector<Visibility> visibility{};
+  // Per landmark (n entries), or empty: the fit's confidence in each point on the scale of
+  // `confidence` (FitResult::landmarkConfidence), NaN where there is none (a landmark the view
+  // does not model). Empty for ground truth and tables without conf_k columns.
+  std::vector<double> landmarkConfidence{};
   // One text cell per TrackTable::extraColumns entry (fewer: the rest are empty).
   std::vector<std::string> extraCells{};
 };
@@ -46,9 +50,11 @@ struct TrackTable {
 
 // Columns, in order: frame, timestamp, success (0/1), confidence, view, tx, ty, tz, scale,
 // pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n, visible_1..visible_n (1, 0, or empty for
-// unknown; only when some row has a visibility), then the extra columns. Missing values are empty
-// cells. Written atomically (temporary file, then rename). Throws Error if a row's point count is
-// not landmarkCount, a row's visibility is neither empty nor landmarkCount long, a row has more
+// unknown; only when some row has a visibility), conf_1..conf_n (only when some row has
+// landmark confidences), then the extra columns. Missing values are empty cells. Written
+// atomically (temporary file, then rename). Throws Error if a row's point count is not
+// landmarkCount, a row's visibility or landmark confidences are neither empty nor landmarkCount
+// long, a row has more
 // extra cells than there are extra columns, or an extra column's name or cell is empty (names
 // only), holds a comma, quote or line break, or repeats a column.
 void writeTrackTable(const std::filesystem::path& path, const TrackTable& table);
@@ -56,9 +62,10 @@ std::string formatTrackTable(const TrackTable& table);
 
 // Reads a table written by writeTrackTable (or by another tool with the same header; column order
 // is taken from the header; without visible_k columns every row's visibility is empty, with them
-// every row's has n entries). Throws InputError naming the file, the
-// line and the column for a missing column, a malformed number or a wrong cell count. Columns the
-// table does not use come back as extraColumns (header order, named ones only) with their cells.
+// every row's has n entries; the same for conf_k and landmarkConfidence). Throws InputError naming
+// the file, the line and the column for a missing column, a malformed number or a wrong cell count.
+// Columns the table does not use come back as extraColumns (header order, named ones only) with
+// their cells.
 TrackTable readTrackTable(const std::filesystem::path& path);
 TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
 

@@ -41,13 +41,21 @@ std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& po
   return visibility;
 }
 
+double confidenceThreshold(const TrackerSettings& settings) {
+  return makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()
+             ? settings.minExpertConfidence
+             : settings.minConfidence;
+}
+
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
     : model_(&model),
       camera_(camera),
       settings_(settings),
       fitter_(model, camera, settings.fit),
       usesExperts_(
-          makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()) {}
+          makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()),
+      smoother_(settings.smoothing),
+      eyes_(model.scheme().normalisationPair()) {}
 
 double Tracker::minConfidence() const {
   return usesExperts_ ? settings_.minExpertConfidence : settings_.minConfidence;
@@ -63,12 +71,14 @@ void Tracker::reset() {
   state_.reset();
   before_.reset();
   view_ = -1;
+  smoother_.restart();
 }
 
 void Tracker::setState(const FitState& state, int view) {
   state_ = state;
   before_.reset();
   view_ = view;
+  smoother_.restart();
 }
 
 template <typename Attempt>
@@ -141,7 +151,7 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
       centre.y() > camera_.height - 1) {
     return TrackFailure::LeftImage;
   }
-  const auto [a, b] = model_->scheme().normalisationPair();
+  const auto [a, b] = eyes_;
   if ((fit.points.col(a) - fit.points.col(b)).norm() < settings_.minInterOcularPixels &&
       std::abs(fit.state.pose.yaw) < 1.0) {
     return TrackFailure::LeftImage;
@@ -219,6 +229,17 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;
     step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
+    step.row.landmarkConfidence = step.fit->landmarkConfidence;
+  }
+  if (settings_.smoothing.enabled) {
+    // A failure is never smoothed over: its points stay as fitted and the filter starts again,
+    // as it does on a re-detection (a jump the filter must not drag the points through).
+    if (!step.row.success || step.detected) smoother_.restart();
+    if (step.row.success) {
+      const auto [a, b] = eyes_;
+      const double eyes = (step.row.points.col(a) - step.row.points.col(b)).norm();
+      smoother_.filter(step.row.points, timestamp, eyes);
+    }
   }
   return step;
 }

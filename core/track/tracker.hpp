@@ -9,11 +9,13 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/common/progress.hpp"
 #include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/track/track_smoother.hpp"
 #include "core/track/track_table.hpp"
 
 namespace clm3d {
@@ -63,6 +65,10 @@ struct TrackerSettings {
   // off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
   double viewSearchExpertConfidence = 0.0;
   double viewSearchMargin = 0.02;  // on either scale
+  // Temporal smoothing of the written points (off by default). Only the rows' points are
+  // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
+  // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
+  SmoothingSettings smoothing;
 };
 
 // Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest
@@ -70,6 +76,11 @@ struct TrackerSettings {
 // least half of that view's training renders). The nearest view, not the fit's selected one (which
 // lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
 std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
+
+// The confidence below which a frame fails under `settings`: minExpertConfidence when its
+// optimiser matches patch experts (rlms), minConfidence otherwise. The same scale as each
+// landmark's confidence, so the studio marks landmarks below it.
+double confidenceThreshold(const TrackerSettings& settings);
 
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
@@ -92,7 +103,8 @@ class Tracker {
   TrackStep track(const cv::Mat& frame, int index, double timestamp);
   // Forget the previous frame: the next frame starts from a detection.
   void reset();
-  // Start the next frame from this state (a hand-corrected frame, or --init points).
+  // Start the next frame from this state (a hand-corrected frame, or --init points). Both restart
+  // the smoother.
   void setState(const FitState& state, int view = -1);
   // Where the next frame's search starts: the last state, its pose moved on by the motion
   // prediction once two consecutive frames were tracked. Only valid while tracking (not lost).
@@ -121,6 +133,8 @@ class Tracker {
   std::optional<FitState> state_;
   std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction
   int view_ = -1;
+  PointSmoother smoother_;
+  std::pair<int, int> eyes_;  // the scheme's normalisation pair (parsed once)
 };
 
 struct TrackSummary {

@@ -248,10 +248,37 @@ std::vector<TrackerOption> buildOptions() {
                          "a frame is also searched from the neighbouring views (0 = never)",
                          [](S& s) -> double& { return s.viewSearchExpertConfidence; }));
 
-  // --- Smoothing (clm3d track) ------------------------------------------------------------------
-  // Issue 13 item 5 adds the smoother as TrackerSettings fields; its options (--smooth...) go
-  // here, in group "Smoothing", so the CLI and the studio's form get them from this table.
-  // --- end of Smoothing -------------------------------------------------------------------------
+  // --- Smoothing (clm3d track; core/track/track_smoother.hpp) ------------------------------------
+  {
+    TrackerOption smooth{"smooth",
+                         "Smooth the points",
+                         "Smoothing",
+                         track,
+                         OptionKind::Flag,
+                         "smooth the written points over time (one-euro filter; a failed or "
+                         "re-detected frame restarts it; docs/tracking.md)",
+                         0.0,
+                         1.0,
+                         0,
+                         {},
+                         {},
+                         {}};
+    smooth.get = [](const S& s) { return std::string(s.smoothing.enabled ? "true" : "false"); };
+    smooth.set = [smooth](S& s, std::string_view text) {
+      s.smoothing.enabled = parseFlag(smooth, text);
+    };
+    options.push_back(std::move(smooth));
+  }
+  options.push_back(real("smooth-min-cutoff", "Cutoff when still (Hz)", "Smoothing", track, 0.01,
+                         100.0, 2,
+                         "with --smooth: cutoff frequency of a still point in Hz (lower: less "
+                         "jitter, more lag)",
+                         [](S& s) -> double& { return s.smoothing.minCutoffHz; }));
+  options.push_back(real("smooth-beta", "Speed coefficient (beta)", "Smoothing", track, 0.0, 1000.0,
+                         2,
+                         "with --smooth: cutoff added per eye distance per second of a point's "
+                         "speed (higher: less lag when moving)",
+                         [](S& s) -> double& { return s.smoothing.beta; }));
 
   return options;
 }

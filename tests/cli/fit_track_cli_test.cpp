@@ -121,19 +121,25 @@ TEST(FitCli, UnknownOptimiserListsTheValidOnes) {
   EXPECT_NE(result.output.find("fastncc"), std::string::npos) << result.output;
 }
 
-TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
-  const FitFiles& f = fitFiles();
+// The held-out head turning from 0 to yawTo degrees in steps of stepDeg, 320x240, in `folder`.
+SequenceFiles turningHead(const std::filesystem::path& folder, double yawTo, double stepDeg) {
   const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
   SequenceSettings settings;
   settings.yawFromDeg = 0.0;
-  settings.yawToDeg = 10.0;
-  settings.stepDeg = 2.0;
+  settings.yawToDeg = yawTo;
+  settings.stepDeg = stepDeg;
   settings.width = 320;
   settings.height = 240;
   settings.interOcularPixels = 60.0;
   settings.supersample = 1;
-  const SequenceFiles files = SequenceFiles::inFolder(f.dir / "sequence");
+  const SequenceFiles files = SequenceFiles::inFolder(folder);
   writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings, {}, files);
+  return files;
+}
+
+TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
+  const FitFiles& f = fitFiles();
+  const SequenceFiles files = turningHead(f.dir / "sequence", 10.0, 2.0);
   const std::string tracks = (f.dir / "tracks.csv").string();
   const std::string overlay = (f.dir / "overlay.avi").string();
   const auto result = runClm3d("track --quiet --model " + f.model + " --video " +
@@ -165,6 +171,43 @@ TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
   };
   EXPECT_EQ(rlms("--min-confidence 0.99 --min-expert-confidence 0.35"), 6);
   EXPECT_EQ(rlms("--min-expert-confidence 0.99"), 0);
+}
+
+// --smooth and its parameters reach the tracker: the same frames succeed, later points move, the
+// eval prints the jitter; impossible parameters are usage errors naming the option.
+TEST(TrackCli, SmoothOptionsSmoothThePointsAndEvalReportsJitter) {
+  const FitFiles& f = fitFiles();
+  const SequenceFiles files = turningHead(f.dir / "smooth-sequence", 8.0, 1.0);
+  const std::string raw = (f.dir / "raw.csv").string();
+  const std::string smooth = (f.dir / "smooth.csv").string();
+  const std::string track =
+      "track --quiet --model " + f.model + " --video " + files.video.string() + " --out ";
+  ASSERT_EQ(runClm3d(track + raw).exitCode, 0);
+  const auto run = runClm3d(track + smooth + " --smooth --smooth-min-cutoff 0.5 --smooth-beta 2");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const TrackTable a = readTrackTable(raw);
+  const TrackTable b = readTrackTable(smooth);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  int moved = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    EXPECT_EQ(a.rows[i].success, b.rows[i].success) << i;
+    EXPECT_EQ(a.rows[i].confidence, b.rows[i].confidence) << i;
+    ASSERT_EQ(a.rows[i].landmarkConfidence.size(), 25U);  // conf_k
+    moved += (a.rows[i].points - b.rows[i].points).cwiseAbs().maxCoeff() > 1e-3 ? 1 : 0;
+  }
+  EXPECT_EQ(a.rows[0].points, b.rows[0].points);  // the first frame passes through
+  EXPECT_GT(moved, 0);
+  const auto eval = runClm3d("eval --truth " + files.truth.string() + " --pred " + smooth);
+  ASSERT_EQ(eval.exitCode, 0) << eval.output;
+  EXPECT_NE(eval.output.find("motion: jitter "), std::string::npos) << eval.output;
+
+  for (const char* bad : {"--smooth-min-cutoff 0", "--smooth-beta -1"}) {
+    const auto usage = runClm3d(track + smooth + " --smooth " + bad);
+    EXPECT_EQ(usage.exitCode, 2) << bad << ": " << usage.output;
+    EXPECT_NE(usage.output.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+              std::string::npos)
+        << usage.output;
+  }
 }
 
 TEST(TrackCli, AnUnreadableVideoIsAClearError) {

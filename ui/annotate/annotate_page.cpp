@@ -99,11 +99,14 @@ AnnotatePage::AnnotatePage(QWidget* parent)
     emit statusMessage(tr("No first guess: %1").arg(message));
   });
 
-  const int seconds = loadPreferences().autosaveSeconds;
-  autosaveTimer_.setInterval(seconds * 1000);
+  preferencesChanged();
   connect(&autosaveTimer_, &QTimer::timeout, this, &AnnotatePage::autosaveNow);
   autosaveTimer_.start();
   updateState();
+}
+
+void AnnotatePage::preferencesChanged() {
+  autosaveTimer_.setInterval(loadPreferences().autosaveSeconds * 1000);
 }
 
 AnnotatePage::~AnnotatePage() {
@@ -259,6 +262,7 @@ void AnnotatePage::buildLayout() {
   sideLayout->addWidget(hints);
 
   auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->setObjectName(QStringLiteral("annotateSplitter"));  // remembered (studio_settings)
   splitter->addWidget(view_);
   splitter->addWidget(side);
   splitter->setStretchFactor(0, 3);

@@ -42,6 +42,8 @@ class AnnotatePage : public Page {
   bool hasUnsavedChanges() const override;
   bool save() override;
   bool isBusy() const override;
+  void preferencesChanged() override;  // the autosave interval
+  int autosaveIntervalMs() const { return autosaveTimer_.interval(); }
 
   // Starts loading a mesh (landmarks beside it, same stem .ljson); false if the current scan's
   // changes could not be saved or a load is running. The scan replaces the current one only once

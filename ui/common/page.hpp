@@ -27,6 +27,9 @@ class Page : public QWidget {
   virtual bool save() { return true; }
   // A long job of the page is running (the shell asks before closing).
   virtual bool isBusy() const { return false; }
+  // The user changed the preferences (ui/project/studio_settings.hpp): a page re-reads those it
+  // uses, e.g. its autosave interval.
+  virtual void preferencesChanged() {}
 
  signals:
   void projectModified();

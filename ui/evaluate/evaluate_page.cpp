@@ -108,6 +108,8 @@ EvaluatePage::EvaluatePage(QWidget* parent) : Page(parent), runner_(new JobRunne
   // Right: the charts side by side above the table.
   auto* results = new QSplitter(Qt::Vertical, this);
   auto* charts = new QSplitter(Qt::Horizontal, results);
+  results->setObjectName(QStringLiteral("resultsSplitter"));  // remembered (studio_settings)
+  charts->setObjectName(QStringLiteral("chartsSplitter"));
   cdfView_ = makeChartView(charts, "cdfChartView", "Cumulative error distribution");
   regionView_ = makeChartView(charts, "regionChartView", "Mean point error per region");
   charts->addWidget(cdfView_);

@@ -40,7 +40,7 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
   table.setColumnCount(kSummaryColumnCount);
   table.setHorizontalHeaderLabels({"Prediction", "Mean", "Median", "SD",
                                    "Within " + QString::number(report.options.threshold, 'f', 2),
-                                   "Convergence", "Frames scored"});
+                                   "Convergence", "Frames scored", "Jitter", "Lag (frames)"});
   table.setRowCount(static_cast<int>(report.sequences.size()));
   for (int row = 0; row < table.rowCount(); ++row) {
     const auto& sequence = report.sequences[static_cast<std::size_t>(row)];
@@ -55,6 +55,12 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
     table.setItem(row, kConvergenceColumn, cell(formatPercent(s.convergenceRate), true));
     table.setItem(row, kFramesColumn,
                   cell(QString("%1/%2").arg(s.scoredFrames).arg(s.normalisedFrames), true));
+    auto* jitter = cell(formatError(s.jitter), true);
+    jitter->setToolTip(QObject::tr("Mean frame-to-frame point motion not explained by the truth's "
+                                   "motion, per eye distance, over %1 frame pairs")
+                           .arg(s.jitterFrames));
+    table.setItem(row, kJitterColumn, jitter);
+    table.setItem(row, kLagColumn, cell(QString::fromStdString(formatFrames(s.lagFrames)), true));
   }
   table.horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table.horizontalHeader()->setSectionResizeMode(kPredictionColumn, QHeaderView::Stretch);
@@ -63,13 +69,14 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
 std::string formatSummaryCsv(const EvaluationReport& report) {
   std::string out =
       "prediction,file,mean,median,sd,within_threshold,convergence_rate,scored_frames,"
-      "normalised_frames,threshold\n";
+      "normalised_frames,threshold,jitter,lag_frames\n";
   for (const auto& sequence : report.sequences) {
     const auto& s = sequence.summary;
     out += csvText(sequence.label) + ',' + csvText(sequence.source) + ',' + csvNumber(s.mean) +
            ',' + csvNumber(s.median) + ',' + csvNumber(s.sd) + ',' + csvNumber(s.withinThreshold) +
            ',' + csvNumber(s.convergenceRate) + ',' + std::to_string(s.scoredFrames) + ',' +
-           std::to_string(s.normalisedFrames) + ',' + csvNumber(report.options.threshold) + '\n';
+           std::to_string(s.normalisedFrames) + ',' + csvNumber(report.options.threshold) + ',' +
+           csvNumber(s.jitter) + ',' + csvNumber(s.lagFrames) + '\n';
   }
   return out;
 }

@@ -3,6 +3,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QSettings>
+#include <QSplitter>
 #include <algorithm>
 
 #include "core/project/project.hpp"
@@ -79,6 +80,23 @@ void setLastProject(const QString& folder) {
     settings.remove(kLastKey);
   } else {
     settings.setValue(kLastKey, normalisedFolder(folder));
+  }
+}
+
+void saveSplitters(const QWidget& widget, const QString& group) {
+  QSettings settings;
+  for (const QSplitter* splitter : widget.findChildren<QSplitter*>()) {
+    if (splitter->objectName().isEmpty()) continue;
+    settings.setValue(group + '/' + splitter->objectName(), splitter->saveState());
+  }
+}
+
+void restoreSplitters(QWidget& widget, const QString& group) {
+  const QSettings settings;
+  for (QSplitter* splitter : widget.findChildren<QSplitter*>()) {
+    if (splitter->objectName().isEmpty()) continue;
+    const QByteArray state = settings.value(group + '/' + splitter->objectName()).toByteArray();
+    if (!state.isEmpty()) splitter->restoreState(state);
   }
 }
 

@@ -6,6 +6,8 @@
 #include <QString>
 #include <QStringList>
 
+class QWidget;
+
 namespace clm3d::ui {
 
 struct StudioPreferences {
@@ -20,7 +22,8 @@ struct StudioPreferences {
   bool reopenLastProject = true;
 };
 
-// Values out of range are clamped; missing ones take the defaults above.
+// Values out of range are clamped; missing ones take the defaults above. Pages read them when
+// built and again in Page::preferencesChanged (the Preferences dialog was accepted).
 StudioPreferences loadPreferences();
 void savePreferences(const StudioPreferences& preferences);
 
@@ -30,6 +33,12 @@ constexpr int kMaxRecentProjects = 10;
 QStringList recentProjects();
 void addRecentProject(const QString& folder);
 void clearRecentProjects();
+
+// The sizes of every named QSplitter inside `widget` (objectName set), remembered under
+// group/objectName, so a page's panes come back as the user left them. Unnamed splitters are
+// skipped; a missing or stale entry leaves the splitter as it is.
+void saveSplitters(const QWidget& widget, const QString& group);
+void restoreSplitters(QWidget& widget, const QString& group);
 
 // The project folder open at the last quit (empty when none was, or the user closed it).
 QString lastProject();

@@ -34,6 +34,7 @@ const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 const QString kSplitterKey = QStringLiteral("window/splitter");
 const QString kPageKey = QStringLiteral("window/page");
+const QString kPageSplittersGroup = QStringLiteral("window/splitters/");
 
 QString titlesOf(const QList<Page*>& pages) {
   QStringList titles;
@@ -116,6 +117,7 @@ void MainWindow::addPage(Page* page) {
   connect(page, &Page::statusMessage, this,
           [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
   if (session_.isOpen()) page->setProject(&session_.project());
+  restoreSplitters(*page, kPageSplittersGroup + page->title());
   if (pageList_->currentRow() < 0 || index == pageToRestore_) showPage(index);
 }
 
@@ -215,7 +217,8 @@ void MainWindow::buildMenus() {
   file->addSeparator();
   file->addAction(tr("&Preferences..."), this, [this] {
     PreferencesDialog dialog(this);
-    dialog.exec();
+    if (dialog.exec() != QDialog::Accepted) return;
+    for (Page* page : pages_) page->preferencesChanged();
   });
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
@@ -342,6 +345,7 @@ void MainWindow::saveWindowState() {
     settings.setValue(kSplitterKey, splitter->saveState());
   }
   settings.setValue(kPageKey, pageList_->currentRow());
+  for (const Page* page : pages_) saveSplitters(*page, kPageSplittersGroup + page->title());
 }
 
 }  // namespace clm3d::ui

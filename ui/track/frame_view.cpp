@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QPainter>
+#include <algorithm>
 #include <cmath>
 
 namespace clm3d::ui {
@@ -22,11 +23,17 @@ void FrameView::setImage(const QImage& image) {
   update();
 }
 
-void FrameView::setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours) {
+void FrameView::setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours,
+                             const std::vector<LandmarkMark>& marks) {
   if (dragged_ >= 0) return;  // the drag in progress owns the points until release
   points_ = points;
   colours_ = colours;
+  marks_ = marks;
   update();
+}
+
+double FrameView::landmarkRadius() const {
+  return std::clamp(imageRect().width() / 160.0, 3.0, 6.0);
 }
 
 void FrameView::setLabel(const QString& text, bool keyframe) {
@@ -87,16 +94,32 @@ void FrameView::paintEvent(QPaintEvent*) {
   painter.setRenderHint(QPainter::SmoothPixmapTransform);
   painter.drawImage(imageRect(), image_);
   painter.setRenderHint(QPainter::Antialiasing);
-  const double radius = std::clamp(imageRect().width() / 160.0, 3.0, 6.0);
+  const double radius = landmarkRadius();
   for (int i = 0; i < points_.cols(); ++i) {
     if (!points_.col(i).allFinite()) continue;
     const QPointF p = toWidget({points_(0, i), points_(1, i)});
     const QColor colour =
         i < static_cast<int>(colours_.size()) ? colours_[static_cast<std::size_t>(i)] : Qt::green;
-    painter.setPen(QPen(Qt::black, 1.5));
-    painter.setBrush(colour);
-    painter.drawEllipse(p, i == dragged_ ? radius * 1.6 : radius,
-                        i == dragged_ ? radius * 1.6 : radius);
+    const LandmarkMark mark =
+        i < static_cast<int>(marks_.size()) ? marks_[static_cast<std::size_t>(i)] : LandmarkMark{};
+    const double r = i == dragged_ ? radius * 1.6 : radius;
+    if (mark.lowConfidence) {
+      painter.setPen(QPen(QColor(230, 40, 40), 2.0));
+      painter.setBrush(Qt::NoBrush);
+      painter.drawEllipse(p, radius * kLowConfidenceRing, radius * kLowConfidenceRing);
+    }
+    if (mark.hidden) {
+      // Hollow: the region colour as a ring on a dark outline, the frame showing through.
+      painter.setBrush(Qt::NoBrush);
+      painter.setPen(QPen(Qt::black, 3.5));
+      painter.drawEllipse(p, r, r);
+      painter.setPen(QPen(colour, 2.0));
+      painter.drawEllipse(p, r, r);
+    } else {
+      painter.setPen(QPen(Qt::black, 1.5));
+      painter.setBrush(colour);
+      painter.drawEllipse(p, r, r);
+    }
   }
   if (!label_.isEmpty()) {
     QFont font = painter.font();

@@ -1,5 +1,7 @@
 // The frame being reviewed, scaled to fit the widget with its aspect kept, with the landmarks on
-// top in their region colours and the frame's label (view, confidence, keyframe). A landmark can be
+// top in their region colours and the frame's label (view, confidence, keyframe). What the tracker
+// says of each landmark is drawn too: a hidden one (visible_k = 0) as a hollow ring, one whose own
+// confidence is low (conf_k below the threshold) with a red ring around it. A landmark can be
 // dragged with the mouse: it follows the pointer and, on release, landmarkMoved reports where it
 // went in frame pixels, so the page turns a whole drag into one undo step.
 #pragma once
@@ -14,6 +16,12 @@
 
 namespace clm3d::ui {
 
+// How a landmark is drawn besides its position and colour.
+struct LandmarkMark {
+  bool hidden = false;         // self-occluded from the fitted pose: drawn hollow
+  bool lowConfidence = false;  // the fit's confidence in it is low: a red ring around it
+};
+
 class FrameView : public QWidget {
   Q_OBJECT
  public:
@@ -21,7 +29,14 @@ class FrameView : public QWidget {
 
   void setImage(const QImage& image);
   // 2 x n frame pixels (NaN columns are not drawn) and a colour per landmark.
-  void setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours);
+  // marks: one per landmark, or empty (every landmark plain).
+  void setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<QColor>& colours,
+                    const std::vector<LandmarkMark>& marks = {});
+  const std::vector<LandmarkMark>& marks() const { return marks_; }
+  // The radius a landmark is drawn with at the current size, widget pixels (the low-confidence
+  // ring is kLowConfidenceRing times it).
+  double landmarkRadius() const;
+  static constexpr double kLowConfidenceRing = 1.9;
   void setLabel(const QString& text, bool keyframe);
   void setEditable(bool editable) { editable_ = editable; }
 
@@ -48,6 +63,7 @@ class FrameView : public QWidget {
   QImage image_;
   Eigen::Matrix2Xd points_;
   std::vector<QColor> colours_;
+  std::vector<LandmarkMark> marks_;
   QString label_;
   bool keyframe_ = false;
   bool editable_ = true;

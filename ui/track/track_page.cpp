@@ -24,12 +24,15 @@
 #include "core/project/project_layout.hpp"
 #include "core/track/ground_truth.hpp"
 #include "core/track/track_table.hpp"
+#include "core/track/tracker.hpp"
 #include "ui/common/error_dialog.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/common/mat_image.hpp"
+#include "ui/project/studio_settings.hpp"
 #include "ui/track/compared_points.hpp"
 #include "ui/track/frame_source.hpp"
 #include "ui/track/frame_view.hpp"
+#include "ui/track/landmark_marks.hpp"
 #include "ui/track/player_bar.hpp"
 #include "ui/track/review_overlay.hpp"
 #include "ui/track/review_panel.hpp"
@@ -42,8 +45,6 @@ namespace clm3d::ui {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kAutosaveMs = 5000;
 
 QString qPath(const fs::path& path) {
   return QString::fromStdString(path.string());
@@ -75,7 +76,7 @@ TrackPage::TrackPage(QWidget* parent)
   connect(runner_, &JobRunner::ended, this, &TrackPage::onJobEnded);
   connect(&undo_, &QUndoStack::cleanChanged, this, [this] { updateControls(); });
   autosaveTimer_ = new QTimer(this);
-  autosaveTimer_->setInterval(kAutosaveMs);
+  preferencesChanged();  // the autosave interval
   connect(autosaveTimer_, &QTimer::timeout, this, &TrackPage::autosave);
   autosaveTimer_->start();
   updateControls();
@@ -544,6 +545,14 @@ bool TrackPage::save() {
   return true;
 }
 
+void TrackPage::preferencesChanged() {
+  autosaveTimer_->setInterval(loadPreferences().autosaveSeconds * 1000);
+}
+
+int TrackPage::autosaveIntervalMs() const {
+  return autosaveTimer_->interval();
+}
+
 bool TrackPage::autosave() {
   if (undo_.isClean() || undo_.index() == autosavedIndex_ || !session_.hasVideo()) return false;
   const fs::path csv = groundTruthCsv();
@@ -665,7 +674,11 @@ void TrackPage::showFrame() {
       colours.push_back(colour);
     }
   }
-  frameView_->setLandmarks(points, colours);
+  // Hidden and low-confidence landmarks, from the track (issue 13 item 6). The threshold is the
+  // frame threshold of the settings the page tracks with.
+  frameView_->setLandmarks(
+      points, colours,
+      landmarkMarks(session_.trackRow(current_), points, confidenceThreshold(trackerSettings_)));
 
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];

@@ -51,6 +51,8 @@ class TrackPage : public Page {
   bool hasUnsavedChanges() const override;
   bool save() override;
   bool isBusy() const override;
+  void preferencesChanged() override;  // the autosave interval
+  int autosaveIntervalMs() const;
 
   // What the buttons do, callable directly (tests, the shell). Each reports failures with the
   // error dialog and returns false.
@@ -73,7 +75,7 @@ class TrackPage : public Page {
   void setCurrentFrame(int frame);
   void setPatchesShown(bool shown);
   // Writes unsaved corrections to the autosave beside groundTruthCsv() (the page's timer calls it
-  // every 5 s); false when there was nothing new to write or it failed.
+  // at the preferences' autosave interval); false when there was nothing new to write or it failed.
   bool autosave();
 
   int currentFrame() const { return current_; }

@@ -47,6 +47,7 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), loader_(new JobRunner(t
                     "a mode, in standard deviations)")));
   shapeColumn->addWidget(shapes_, 1);
   split_ = new QSplitter(Qt::Vertical);
+  split_->setObjectName(QStringLiteral("modelViewSplitter"));  // remembered (studio_settings)
   split_->addWidget(patchBox);
   split_->addWidget(shapeBox);
   split_->setStretchFactor(0, 0);  // a larger page gives the room to the shape view

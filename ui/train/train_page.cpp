@@ -49,6 +49,7 @@ TrainPage::TrainPage(QWidget* parent) : Page(parent) {
   settingsScroll->setMinimumWidth(settings_->sizeHint().width() + 24);
 
   auto* left = new QSplitter(Qt::Vertical);
+  left->setObjectName(QStringLiteral("trainSplitter"));  // remembered (studio_settings)
   left->addWidget(inGroup(tr("Training sources (dataset manifest)"), sources_));
   left->addWidget(inGroup(tr("Run"), run_));
   left->setStretchFactor(0, 2);

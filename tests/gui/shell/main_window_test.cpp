@@ -1,19 +1,24 @@
 // The studio's main window with small test pages: an opened project reaches the title and every
 // page, a page's project change is saved to clm3d-project.json, a broken project file shows the
 // error dialog naming it and leaves the window usable, the recent-projects menu, the questions
-// before unsaved or running work is dropped, page shortcuts and the saved window state.
+// before unsaved or running work is dropped, page shortcuts, the saved window state and page
+// splitters, and accepted preferences reaching the pages.
 #include "ui/shell/main_window.hpp"
 
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QTimer>
 #include <fstream>
 
 #include "tests/gui/project/isolated_settings.hpp"
@@ -42,6 +47,7 @@ class RecordingPage : public Page {
     return saveSucceeds;
   }
   bool isBusy() const override { return busy; }
+  void preferencesChanged() override { ++preferencesCalls; }
   Project* project() const { return project_; }
   void addModel(const std::filesystem::path& model) {
     project_->addUnique(project_->models, model);
@@ -54,6 +60,7 @@ class RecordingPage : public Page {
   bool saveSucceeds = true;
   int saveCalls = 0;
   int setProjectCalls = 0;
+  int preferencesCalls = 0;
 
  private:
   QString title_;
@@ -224,6 +231,59 @@ class MainWindowTest : public QObject {
     reopened.addPage(new RecordingPage("B"));
     QCOMPARE(reopened.currentPage()->title(), QString("B"));
     QCOMPARE(reopened.size(), QSize(900, 700));
+  }
+
+  // A page's named splitters come back as the user left them, per page; unnamed ones are left.
+  void pageSplittersAreRememberedAcrossRuns() {
+    const auto addSplitter = [](Page& page) {
+      auto* splitter = new QSplitter(Qt::Horizontal, &page);
+      splitter->setObjectName(QStringLiteral("panes"));
+      splitter->addWidget(new QWidget);
+      splitter->addWidget(new QWidget);
+      splitter->resize(600, 300);
+      return splitter;
+    };
+    QSplitter* panes = addSplitter(*second_);
+    panes->setSizes({450, 150});
+    const QList<int> left = panes->sizes();
+    QVERIFY(left[0] > 2 * left[1]);
+    QVERIFY(window_->close());
+
+    MainWindow reopened(MainWindow::PageSet::None);
+    auto* first = new RecordingPage("Annotate");
+    auto* second = new RecordingPage("Train");
+    QSplitter* otherPage = addSplitter(*first);
+    QSplitter* restored = addSplitter(*second);
+    const QList<int> untouched = otherPage->sizes();
+    reopened.addPage(first);
+    reopened.addPage(second);
+    QCOMPARE(restored->sizes(), left);
+    QCOMPARE(otherPage->sizes(), untouched);
+  }
+
+  // Accepting the Preferences dialog saves the values and tells every page; cancelling does not.
+  void acceptedPreferencesReachThePages() {
+    const auto runDialog = [&](int seconds, bool accept) {
+      QTimer::singleShot(0, [seconds, accept] {
+        auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+        QVERIFY(dialog != nullptr);
+        dialog->findChild<QSpinBox*>(QStringLiteral("autosaveSeconds"))->setValue(seconds);
+        accept ? dialog->accept() : dialog->reject();
+      });
+      QAction* preferences = nullptr;
+      for (QAction* action : window_->findChildren<QAction*>()) {
+        if (action->text() == QStringLiteral("&Preferences...")) preferences = action;
+      }
+      QVERIFY(preferences != nullptr);
+      preferences->trigger();
+    };
+    runDialog(17, true);
+    QCOMPARE(loadPreferences().autosaveSeconds, 17);
+    QCOMPARE(first_->preferencesCalls, 1);
+    QCOMPARE(second_->preferencesCalls, 1);
+    runDialog(99, false);
+    QCOMPARE(loadPreferences().autosaveSeconds, 17);
+    QCOMPARE(first_->preferencesCalls, 1);
   }
 
  private:

@@ -23,10 +23,13 @@
 #include "core/project/project.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/ground_truth.hpp"
+#include "core/track/tracker.hpp"
 #include "core/video/video_reader.hpp"
+#include "tests/gui/project/isolated_settings.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
 #include "tests/gui/track/track_fixture.hpp"
 #include "ui/common/job_runner.hpp"
+#include "ui/project/studio_settings.hpp"
 #include "ui/track/frame_view.hpp"
 #include "ui/track/player_bar.hpp"
 #include "ui/track/timeline_widget.hpp"
@@ -54,6 +57,7 @@ void screenshot(QWidget& widget, const QString& name) {
 class TrackPageTest : public QObject {
   Q_OBJECT
  private:
+  test::IsolatedSettings settings_;  // the preferences tests never touch the user's own
   test::TempFolder temp_;
   Project project_;
   SequenceFiles sequence_;
@@ -171,6 +175,31 @@ class TrackPageTest : public QObject {
     QVERIFY(!patches->isChecked());
     QTest::keyClick(page_.get(), Qt::Key_P);
     QVERIFY(patches->isChecked());
+  }
+
+  // The frame view draws what the tracker wrote per landmark: visible_k = 0 hollow, conf_k below
+  // the tracker's threshold ringed (landmark_marks_test checks the drawing itself).
+  void theFrameViewMarksWhatTheTrackerWrote() {
+    const double threshold = confidenceThreshold(page_->trackerSettings());
+    int hidden = 0;
+    for (int f = 0; f < kFrames; ++f) {
+      page_->setCurrentFrame(f);
+      const TrackRow* row = page_->session().trackRow(f);
+      QVERIFY(row != nullptr);
+      QCOMPARE(row->landmarkConfidence.size(), std::size_t{25});  // conf_k from the tracker
+      const auto& marks = page_->frameView()->marks();
+      QCOMPARE(marks.size(), std::size_t{25});
+      for (std::size_t k = 0; k < 25; ++k) {
+        QCOMPARE(marks[k].hidden, row->visibility[k] == Visibility::Hidden);
+        const double c = row->landmarkConfidence[k];
+        QCOMPARE(marks[k].lowConfidence, std::isfinite(c) && c < threshold);
+        hidden += marks[k].hidden ? 1 : 0;
+      }
+    }
+    qInfo("%d hidden landmark-frames marked", hidden);
+    // The written CSV carries them too, so a reopened track shows the same marks.
+    const TrackTable written = readTrackTable(page_->tracksCsv());
+    QCOMPARE(written.rows.back().landmarkConfidence.size(), std::size_t{25});
   }
 
   void clickingTheTimelineMovesToThatFrame() {
@@ -301,6 +330,17 @@ class TrackPageTest : public QObject {
     QVERIFY2(message.contains("broken-video.avi"), qPrintable(message));
     // The previous video stays open.
     QCOMPARE(page_->session().video().path, sequence_.video);
+  }
+
+  void theAutosaveIntervalIsThePreferences() {
+    QCOMPARE(page_->autosaveIntervalMs(), loadPreferences().autosaveSeconds * 1000);
+    StudioPreferences preferences = loadPreferences();
+    preferences.autosaveSeconds = 11;
+    savePreferences(preferences);
+    page_->preferencesChanged();
+    QCOMPARE(page_->autosaveIntervalMs(), 11000);
+    TrackPage fresh;  // a page built later reads them too
+    QCOMPARE(fresh.autosaveIntervalMs(), 11000);
   }
 
   void unsavedCorrectionsAreAutosavedAndRecoveredOnReopen() {

@@ -235,3 +235,62 @@ TEST(EvalLandmarkError, MismatchedOrUnusableTablesAreInputErrors) {
 
 }  // namespace
 }  // namespace clm3d
+
+namespace clm3d {
+namespace {
+
+// Jitter: motion of the prediction the truth's motion does not explain, per eye distance.
+TEST(EvalJitter, MotionTheTruthExplainsIsNoJitter) {
+  const auto truth = test::truthTable(6);  // moving 3 pixels a frame
+  const auto offset =
+      evaluateSequence(truth, test::offsetTable(truth, 0.0, 2.0), Scheme::thesis25());
+  EXPECT_EQ(offset.summary.jitterFrames, 5);
+  EXPECT_NEAR(offset.summary.jitter, 0.0, 1e-12);
+  EXPECT_TRUE(std::isnan(offset.frames[0].jitter));   // no previous frame
+  EXPECT_NEAR(offset.summary.lagFrames, 0.0, 1e-12);  // off the motion's line: no lag
+}
+
+TEST(EvalJitter, AlternatingOffsetsAreJitter) {
+  const auto truth = test::truthTable(8);
+  const auto shaking = test::shiftedTable(
+      truth, [](int frame, int) { return Eigen::Vector2d(0.0, frame % 2 == 0 ? 1.5 : -1.5); });
+  const auto evaluation = evaluateSequence(truth, shaking, Scheme::thesis25());
+  EXPECT_EQ(evaluation.summary.jitterFrames, 7);
+  EXPECT_NEAR(evaluation.summary.jitter, 3.0 / test::kInterOcular, 1e-12);
+  EXPECT_NEAR(evaluation.frames[3].jitter, 3.0 / test::kInterOcular, 1e-12);
+}
+
+TEST(EvalJitter, APredictionAFrameLateHasALagOfOne) {
+  const auto truth = test::truthTable(6);
+  const auto late = test::shiftedTable(truth, [](int, int) { return Eigen::Vector2d(-3.0, 0.0); });
+  const auto evaluation = evaluateSequence(truth, late, Scheme::thesis25());
+  EXPECT_NEAR(evaluation.summary.lagFrames, 1.0, 1e-12);
+  EXPECT_NEAR(evaluation.summary.jitter, 0.0, 1e-12);
+}
+
+TEST(EvalJitter, FailedFramesAndTruthGapsHaveNoJitter) {
+  auto truth = test::truthTable(8);
+  auto prediction = test::offsetTable(truth, 1.0, 0.0);
+  prediction.rows[2].success = false;        // frames 2 and 3 lose their jitter
+  truth.rows.erase(truth.rows.begin() + 6);  // frame 7 has no previous truth frame
+  const auto evaluation = evaluateSequence(truth, prediction, Scheme::thesis25());
+  ASSERT_EQ(evaluation.frames.size(), 7U);
+  EXPECT_EQ(evaluation.summary.jitterFrames, 3);  // frames 1, 4, 5
+  EXPECT_TRUE(std::isnan(evaluation.frames[2].jitter));
+  EXPECT_TRUE(std::isnan(evaluation.frames[3].jitter));
+  EXPECT_TRUE(std::isnan(evaluation.frames[6].jitter));
+  EXPECT_FALSE(std::isnan(evaluation.frames[4].jitter));
+}
+
+TEST(EvalJitter, AStillTruthHasNoLag) {
+  auto truth = test::truthTable(1);
+  truth.rows.push_back(truth.rows[0]);
+  truth.rows[1].frame = 1;
+  const auto evaluation =
+      evaluateSequence(truth, test::offsetTable(truth, 1.0, 0.0), Scheme::thesis25());
+  EXPECT_TRUE(std::isnan(evaluation.summary.lagFrames));
+  EXPECT_NEAR(evaluation.summary.jitter, 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace clm3d

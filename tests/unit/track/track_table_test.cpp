@@ -155,6 +155,38 @@ TEST(TrackTable, VisibilityColumnsAreAllOrNoneAndFlagsOnly) {
   EXPECT_THROW(formatTrackTable(table), Error);
 }
 
+TEST(TrackTable, LandmarkConfidenceColumnsFollowTheVisibilityAndRoundTrip) {
+  TrackTable table = sampleTable();
+  table.rows[0].visibility = {Visibility::Visible, Visibility::Hidden, Visibility::Visible};
+  table.rows[0].landmarkConfidence = {0.75, kNan, -0.125};
+  const auto text = formatTrackTable(table);
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "frame,timestamp,success,confidence,view,tx,ty,tz,scale,pitch,yaw,roll,"
+            "x_1,x_2,x_3,y_1,y_2,y_3,visible_1,visible_2,visible_3,conf_1,conf_2,conf_3");
+  EXPECT_NE(text.find(",1,0,1,0.75,,-0.125\n"), std::string::npos) << text;
+  const auto back = parseTrackTable(text, "t.csv");
+  ASSERT_EQ(back.rows[0].landmarkConfidence.size(), 3U);
+  EXPECT_EQ(back.rows[0].landmarkConfidence[0], 0.75);
+  EXPECT_TRUE(std::isnan(back.rows[0].landmarkConfidence[1]));
+  EXPECT_EQ(back.rows[0].landmarkConfidence[2], -0.125);
+  ASSERT_EQ(back.rows[1].landmarkConfidence.size(), 3U);  // a row without: all empty cells
+  EXPECT_TRUE(std::isnan(back.rows[1].landmarkConfidence[0]));
+  EXPECT_TRUE(back.extraColumns.empty());
+  EXPECT_EQ(formatTrackTable(back), text);
+
+  // Older tables have none, and stay without when written again.
+  const auto old = parseTrackTable("frame,success,x_1,y_1\n0,1,1,2\n", "old.csv");
+  EXPECT_TRUE(old.rows[0].landmarkConfidence.empty());
+  EXPECT_EQ(formatTrackTable(old).find("conf_"), std::string::npos);
+  // All or none, and numbers only.
+  EXPECT_THROW(parseTrackTable("frame,success,x_1,y_1,x_2,y_2,conf_2\n0,1,1,2,3,4,1\n", "c.csv"),
+               InputError);
+  EXPECT_THROW(parseTrackTable("frame,success,x_1,y_1,conf_1\n0,1,1,2,high\n", "c.csv"),
+               InputError);
+  table.rows[0].landmarkConfidence = {0.5};
+  EXPECT_THROW(formatTrackTable(table), Error);
+}
+
 TEST(TrackTable, HalfMissingPointIsWrittenAsMissing) {
   TrackTable table;
   table.landmarkCount = 1;
