@@ -35,6 +35,7 @@ ImageFitSettings imageFitSettings(const FitArgs& args) {
   settings.fit = args.fit.settings();
   settings.detector = args.fit.detectorKind();
   settings.verticalFovDeg = args.fit.fovDeg;
+  settings.startSearch = args.fit.tracker.startSearch;
   settings.startOffset = args.startOffset;
   settings.startOffsetSeed = args.fit.seed();
   return settings;

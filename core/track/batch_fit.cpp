@@ -18,6 +18,7 @@
 #include "core/common/error.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
+#include "core/detect/start_search.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -41,17 +42,12 @@ ImageFitOutcome failed(const fs::path& image, ImageFitStatus status, std::string
 
 // The start moved in the image plane by `share` of its projected eye distance, in a direction
 // drawn from `key`.
-FitState offsetStart(const ClmModel& model, const Fitter& fitter, FitState start, double share,
-                     std::uint64_t key) {
-  const Eigen::Matrix2Xd points = fitter.project(start);
-  const auto [left, right] = model.scheme().normalisationPair();
-  const double eyes = (points.col(left) - points.col(right)).norm();
+FitState offsetStart(const ClmModel& model, const Fitter& fitter, const FitState& start,
+                     double share, std::uint64_t key) {
   SplitMixRandom random(key);
   const double angle = random.uniform(0.0, 2.0 * std::numbers::pi);
-  const double mmPerPixel = -start.pose.translation.z() / fitter.camera().focalY();
-  start.pose.translation.x() += share * eyes * std::cos(angle) * mmPerPixel;
-  start.pose.translation.y() -= share * eyes * std::sin(angle) * mmPerPixel;
-  return start;
+  return shiftedStart(model, fitter, start,
+                      share * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
 }
 
 }  // namespace
@@ -137,7 +133,9 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
           mixKey(settings_.startOffsetSeed, std::hash<std::string>{}(image.stem().string())));
     }
     const auto begin = std::chrono::steady_clock::now();
-    FitResult fit = fitter.fit(lastImage_, start);
+    FitResult fit = startPoints.empty() ? fitFromBestStart(fitter, *model_, lastImage_, start,
+                                                           settings_.startSearch)
+                                        : fitter.fit(lastImage_, start);
     outcome.fitMilliseconds = millisecondsSince(begin);
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];

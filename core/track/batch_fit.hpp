@@ -21,6 +21,7 @@
 #include "core/fit/fitter.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/model/clm_model.hpp"
+#include "core/track/tracker.hpp"
 
 namespace clm3d {
 
@@ -34,6 +35,8 @@ struct ImageFitSettings {
   FitSettings fit;
   DetectorKind detector = DetectorKind::Cascade;
   double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every image
+  // Starts searched around the detector's (not around given points): TrackerSettings::startSearch.
+  StartSearchSettings startSearch = TrackerSettings{}.startSearch;
   // Failure-detection experiments: every start moved by this share of its inter-ocular distance
   // in a direction drawn per image (seeded by the image's stem and startOffsetSeed), so that a
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.

@@ -176,10 +176,12 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   step.row.points = Eigen::Matrix2Xd::Constant(2, model_->shape.pointCount(),
                                                std::numeric_limits<double>::quiet_NaN());
   double searchMs = 0.0;  // every search of the frame
-  const auto attempt = [&](const FitState& start, int view) {
+  const auto attempt = [&](const FitState& start, int view,
+                           const StartSearchSettings* search = nullptr) {
     const auto begin = std::chrono::steady_clock::now();
     try {
-      step.fit = fitter_.fit(frame, start, view);
+      step.fit = search != nullptr ? fitFromBestStart(fitter_, *model_, frame, start, *search)
+                                   : fitter_.fit(frame, start, view);
       step.failure = judge(*step.fit);
     } catch (const InputError&) {
       // The start put the face outside the image: the track is lost, not the input broken.
@@ -204,7 +206,8 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     const std::vector<FaceBox> faces = detector().detect(frame);
     if (!faces.empty()) {
       step.detected = true;
-      attempt(stateFromBox(*model_, camera_, faces.front()), -1);
+      const FitState start = stateFromBox(*model_, camera_, faces.front());
+      attempt(start, -1, &settings_.startSearch);
     } else if (!fromPrevious) {
       step.failure = TrackFailure::NoFace;
     }

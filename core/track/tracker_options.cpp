@@ -175,6 +175,14 @@ std::vector<TrackerOption> buildOptions() {
       "face detector: cascade (OpenCV) or dlib (HOG)",
       [](const S& s) { return std::string(detectorKindName(s.detector)); },
       [](S& s, const std::string& value) { s.detector = parseDetectorKind(value); }));
+  options.push_back(integer("start-grid", "Start grid steps", "Search", search, 0, 3,
+                            "a detected face is also searched from a (2N+1)^2 grid of starts "
+                            "around the detector's, the most confident fit kept (0 = the "
+                            "detector's start alone)",
+                            [](S& s) -> int& { return s.startSearch.steps; }));
+  options.push_back(real("start-shift", "Start grid spacing", "Search", search, 0.01, 0.5, 2,
+                         "spacing of that grid in eye distances of the placed start",
+                         [](S& s) -> double& { return s.startSearch.shift; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));

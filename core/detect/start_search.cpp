@@ -1,0 +1,54 @@
+#include "core/detect/start_search.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace clm3d {
+
+FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState start,
+                      const Eigen::Vector2d& shareOfEyes) {
+  const Eigen::Matrix2Xd points = fitter.project(start);
+  const auto [left, right] = model.scheme().normalisationPair();
+  const double eyes = (points.col(left) - points.col(right)).norm();
+  // Eye coordinates look down -z with y up: a pixel is -z / focal millimetres at the face's depth.
+  const double mmPerPixel = -start.pose.translation.z() / fitter.camera().focalY();
+  start.pose.translation.x() += shareOfEyes.x() * eyes * mmPerPixel;
+  start.pose.translation.y() -= shareOfEyes.y() * eyes * mmPerPixel;
+  return start;
+}
+
+FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
+                           const FitState& start, const StartSearchSettings& settings,
+                           int* searches) {
+  std::vector<double> sizes{1.0};
+  for (const double size : settings.sizes) {
+    if (size != 1.0) sizes.push_back(size);
+  }
+  const int steps = std::max(0, settings.steps);
+  FitResult best = fitter.fit(image, start);
+  int count = 1;
+  for (int dy = -steps; dy <= steps; ++dy) {
+    for (int dx = -steps; dx <= steps; ++dx) {
+      for (const double size : sizes) {
+        if (dx == 0 && dy == 0 && size == 1.0) continue;  // searched first
+        FitState moved =
+            shiftedStart(model, fitter, start, Eigen::Vector2d(dx, dy) * settings.shift);
+        moved.pose.scale *= size;
+        FitResult fit = fitter.fit(image, moved);
+        ++count;
+        if (fit.confidence > best.confidence) best = std::move(fit);
+      }
+    }
+  }
+  if (count > 1) {
+    // The fitter keeps the last search's templates (the overlay draws them): search once more from
+    // the best result, and keep that unless it is worse.
+    FitResult again = fitter.fit(image, best.state);
+    ++count;
+    if (again.confidence >= best.confidence) best = std::move(again);
+  }
+  if (searches != nullptr) *searches = count;
+  return best;
+}
+
+}  // namespace clm3d

@@ -1,0 +1,54 @@
+// fitFromBestStart: a start outside the search's capture range is recovered by the grid of moved
+// starts (one of which lands near the face), the most confident fit is the one returned, and with
+// no grid it is the plain search.
+#include "core/detect/start_search.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/fit_fixture.hpp"
+
+namespace clm3d {
+namespace {
+
+double errorOf(const FitResult& fit, const test::FitScene& scene) {
+  return test::meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
+}
+
+TEST(StartSearch, ShiftedStartMovesTheProjectionByTheShareOfTheEyeDistance) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
+  Fitter fitter(model, scene.camera);
+  const FitState moved = shiftedStart(model, fitter, scene.truth, Eigen::Vector2d(0.5, -0.25));
+  const Eigen::Matrix2Xd before = fitter.project(scene.truth);
+  const Eigen::Matrix2Xd after = fitter.project(moved);
+  const double eyes = (before.col(7) - before.col(10)).norm();
+  const Eigen::Vector2d shift = (after - before).rowwise().mean();
+  EXPECT_NEAR(shift.x(), 0.5 * eyes, 0.05 * eyes);
+  EXPECT_NEAR(shift.y(), -0.25 * eyes, 0.05 * eyes);
+}
+
+TEST(StartSearch, TheGridRecoversAStartOutsideTheCaptureRange) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
+  Fitter fitter(model, scene.camera);
+  const FitState far = shiftedStart(model, fitter, scene.truth, Eigen::Vector2d(0.6, 0.0));
+
+  int searches = 0;
+  const FitResult alone = fitFromBestStart(fitter, model, scene.image, far, {}, &searches);
+  EXPECT_EQ(searches, 1);
+  const FitResult plain = fitter.fit(scene.image, far);
+  EXPECT_EQ(alone.confidence, plain.confidence);
+  EXPECT_TRUE(alone.points.isApprox(plain.points));
+
+  StartSearchSettings grid;
+  grid.steps = 1;
+  grid.shift = 0.6;
+  const FitResult searched = fitFromBestStart(fitter, model, scene.image, far, grid, &searches);
+  EXPECT_EQ(searches, 10);  // 9 starts and the best searched again
+  EXPECT_GE(searched.confidence, alone.confidence);
+  EXPECT_LT(errorOf(searched, scene), 0.1) << "from the far start alone: " << errorOf(alone, scene);
+  EXPECT_LT(errorOf(searched, scene), 0.5 * errorOf(alone, scene));
+}
+
+}  // namespace
+}  // namespace clm3d
