@@ -11,7 +11,9 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
+#include <QStyle>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <chrono>
@@ -182,9 +184,23 @@ void TrackPage::buildLayout() {
   connectTrackFiles();
   side->addStretch(1);
 
+  // The side column scrolls when the window is shorter than its controls (1280x800 fits the
+  // frame, the timeline and the player; the column's lower panels scroll into view).
+  auto* sideWidget = new QWidget(this);
+  sideWidget->setLayout(side);
+  auto* sideScroll = new QScrollArea(this);
+  sideScroll->setObjectName("sidePanel");
+  sideScroll->setWidget(sideWidget);
+  sideScroll->setWidgetResizable(true);
+  sideScroll->setFrameShape(QFrame::NoFrame);
+  sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  sideScroll->setMinimumWidth(sideWidget->minimumSizeHint().width() +
+                              style()->pixelMetric(QStyle::PM_ScrollBarExtent));
+  sideScroll->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Expanding);
+
   auto* middle = new QHBoxLayout;
   middle->addWidget(frameView_, 1);
-  middle->addLayout(side);
+  middle->addWidget(sideScroll);
 
   timeline_ = new TimelineWidget(this);
   timeline_->setObjectName("timeline");

@@ -103,8 +103,9 @@ bool TrackPage::loadTrack(const fs::path& csv) {
 
 void TrackPage::openTracksOfVideo() {
   if (!project_ || !session_.hasVideo()) return;
-  // The newest track of the video is shown; a ground truth other than the one being corrected
-  // (a synthetic sequence's exact truth) is compared with it.
+  // The newest track of the video is shown, unless a ground truth of it is being corrected (that
+  // was opened instead, and a track would overwrite its corrected frames); a ground truth other
+  // than the one being corrected (a synthetic sequence's exact truth) is compared with it.
   const std::vector<TrackFileEntry> files = trackFilesOf(*project_, session_.video().path);
   fs::path newest;
   fs::file_time_type newestTime{};
@@ -123,7 +124,8 @@ void TrackPage::openTracksOfVideo() {
       newestTime = time;
     }
   }
-  if (!newest.empty()) loadTrack(newest);
+  std::error_code error;
+  if (!newest.empty() && !fs::exists(corrected, error)) loadTrack(newest);
   if (!reference.empty()) compareWith(reference);
   refreshTrackFiles();
 }
