@@ -6,8 +6,6 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
-#include <exception>
-#include <thread>
 
 #include "core/detect/initialisation.hpp"
 #include "core/eval/eval_report.hpp"
@@ -20,26 +18,8 @@
 #include "ui/evaluate/summary_table.hpp"
 
 namespace clm3d::ui {
-namespace {
 
 namespace fs = std::filesystem;
-
-// Rendering and training use the offscreen renderer, which must not run on the GUI thread.
-template <typename Work>
-void runOffGuiThread(Work&& work) {
-  std::exception_ptr error;
-  std::thread worker([&] {
-    try {
-      work();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  });
-  worker.join();
-  if (error) std::rethrow_exception(error);
-}
-
-}  // namespace
 
 class SmoothingJitterTest : public QObject {
   Q_OBJECT
@@ -49,7 +29,7 @@ class SmoothingJitterTest : public QObject {
     const SequenceFiles sequence = SequenceFiles::inFolder(folder.path() / "turn");
     const fs::path raw = folder.path() / "raw.csv";
     const fs::path smooth = folder.path() / "smooth.csv";
-    runOffGuiThread([&] {
+    test::runOffGuiThread([&] {
       SequenceSettings settings;
       settings.yawFromDeg = 0.0;
       settings.yawToDeg = 30.0;
