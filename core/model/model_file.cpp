@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -292,8 +293,8 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t 
       addValues(floats, static_cast<std::uint64_t>(modes), 1, scaleField);
       if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
         // weights, gain and bias per landmark
-        addValues(floats, landmarks.size(),
-                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scaleField);
+        addValues(floats, landmarks.size(), 2 + static_cast<std::uint64_t>(patchSize * patchSize),
+                  scaleField);
       }
     }
   }
@@ -372,8 +373,26 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
   const auto headerLength = reader.read<std::uint64_t>();
   if (headerLength > reader.remaining()) throw Error("header length exceeds the payload");
   const auto headerText = reader.take(static_cast<std::size_t>(headerLength));
-  const json header = json::parse(headerText, nullptr, false);
+  // A key given twice would be read once (the last wins) and written once: refused, so that what
+  // loads is what the file says and writes back to the same bytes.
+  std::vector<std::set<std::string>> keysOfOpenObjects;
+  std::string duplicateKey;
+  const json::parser_callback_t rejectDuplicates = [&](int, json::parse_event_t event,
+                                                       json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      keysOfOpenObjects.emplace_back();
+    } else if (event == json::parse_event_t::object_end && !keysOfOpenObjects.empty()) {
+      keysOfOpenObjects.pop_back();
+    } else if (event == json::parse_event_t::key && !keysOfOpenObjects.empty() &&
+               !keysOfOpenObjects.back().insert(parsed.get<std::string>()).second &&
+               duplicateKey.empty()) {
+      duplicateKey = parsed.get<std::string>();
+    }
+    return true;
+  };
+  const json header = json::parse(headerText, rejectDuplicates, false);
   if (header.is_discarded() || !header.is_object()) throw Error("header is not a JSON object");
+  if (!duplicateKey.empty()) throw Error("header gives the key \"" + duplicateKey + "\" twice");
 
   std::vector<int> mirrorOf;
   ClmModel model = skeletonFrom(header, reader.remaining(), version, mirrorOf);

@@ -150,6 +150,18 @@ TEST(ModelFile, RejectsInconsistentContentWithAValidChecksum) {
                            good, payload.substr(0, 8) + garbled + payload.substr(8 + headerLength)))
                 .find("m.clm3d: "),
             std::string::npos);
+  // A key given twice (the second "patchSize" renamed to an earlier key of its object): the
+  // reader would keep one of them and write back other bytes (found by fuzz_model_file).
+  std::string twice = header;
+  const auto patchSize = twice.find("\"patchSize\"");
+  ASSERT_NE(patchSize, std::string::npos);
+  twice.replace(patchSize, 11, "\"landmarks\"");
+  EXPECT_NE(
+      parseError(withPayload(good, payload.substr(0, 8) + twice + payload.substr(8 + headerLength)))
+          .find("gives the key \"landmarks\" twice"),
+      std::string::npos)
+      << parseError(
+             withPayload(good, payload.substr(0, 8) + twice + payload.substr(8 + headerLength)));
   // An array value out of range: an alpha of 2 (the last float of the file: view 2 is the mirror
   // image of view 0 and stored as a reference, so the last stored view is view 1).
   std::string arrays = payload;
