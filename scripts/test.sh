@@ -32,19 +32,23 @@ report_times() {
 }
 trap report_times EXIT
 
-# Unit tests that take over 10 s each under ASan (unoptimised): 25 tests, 11 of the pass's 20
-# minutes of test time between them (docs/testing.md). The release pass runs them all, and the tsan
-# pass the threaded training and tracking among them.
-asan_skip='^(SynthRender\.|SynthHead\.(LandmarksLieOnTheMeshSurface|ManySeedsAndExpressionsGenerate)|'
+# The slowest unit tests under ASan (unoptimised): 32 tests that took 10-73 s each (the groups end
+# in ".*"; a clean-clone run still spent 10 minutes in this pass before the last 16 were added,
+# docs/testing.md). The release pass runs them all, and the tsan pass the threaded training and
+# tracking among them.
+asan_skip='^(SynthRender\..*|SynthHead\.(LandmarksLieOnTheMeshSurface|ManySeedsAndExpressionsGenerate)|'
 asan_skip+='PhotoTraining\.(PhotosJoinTheViewNearestTheirPose|ModelTrainedWithPhotosHasExpertsAndSaysSo)|'
 asan_skip+='Augmentation\.(TrainedModelIsTheSameWhateverTheThreadCount|ContactSheetOfAugmentedRenders)|'
 asan_skip+='ExpertTrainingInModels\.HiddenShareOneGivesEveryKeptLandmarkAnExpert|'
 asan_skip+='CondensationOptimiser\.(NeverLowersTheMatchUnderFixedTemplates|BeginFitMovesTheCloudToTheNewStart)|'
 asan_skip+='FastNccOptimiser\.RecoversPoseAndShapeOfARenderedHeadPlanar|ShapeProjector\.JacobianMatchesFiniteDifferences|'
-asan_skip+='DetectorEvaluation\.|StateFromPoints\.PlanarModelRecoversItsOwnProjection|'
-asan_skip+='StateFromBox\.ProfileBoxesTurnTheirWayAndFrontalBoxesFaceTheCamera|StartAccuracy\.|'
+asan_skip+='DetectorEvaluation\..*|StateFromPoints\.PlanarModelRecoversItsOwnProjection|'
+asan_skip+='StateFromBox\.ProfileBoxesTurnTheirWayAndFrontalBoxesFaceTheCamera|StartAccuracy\..*|'
 asan_skip+='Tracker\.(FollowsAHeldOutHeadFromTheFirstFrame|NextFrameStartsFromTheExtrapolatedPose|'
-asan_skip+='RlmsFailsFramesWithoutAFaceAndTracksTheFace))$'
+asan_skip+='RlmsFailsFramesWithoutAFaceAndTracksTheFace)|RetrackFrom\..*|'
+asan_skip+='CondensationOptimiser\.(RecoversAPoseAndShapePerturbationOfASyntheticRender|'
+asan_skip+='IsReproducibleWithTheSameSeedAndDiffersWithAnother)|'
+asan_skip+='ShapeProjector\.ClampKeepsShapeWithinLimitsAndPlanarPoseFlat)$'
 
 stage "dependencies" bash packaging/install-deps.sh
 
