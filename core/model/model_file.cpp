@@ -26,6 +26,7 @@ constexpr std::int64_t kMaxPoints = 10'000;
 constexpr std::int64_t kMaxViews = 1'000;
 constexpr std::int64_t kMaxScales = 16;
 constexpr std::int64_t kMaxPatchSize = 1'024;
+constexpr std::int64_t kMaxExpertUnits = 64;
 
 using nlohmann::json;
 
@@ -109,7 +110,7 @@ bool samePatchModel(const PatchModel& a, const PatchModel& b) {
   for (std::size_t e = 0; e < a.experts.size(); ++e) {
     const PatchExpert& x = a.experts[e];
     const PatchExpert& y = b.experts[e];
-    if (x.weights != y.weights || x.gain != y.gain || x.bias != y.bias) return false;
+    if (x.weights != y.weights || x.bias != y.bias || x.alpha != y.alpha) return false;
   }
   return true;
 }
@@ -148,10 +149,12 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
     const ViewModel& view = model.views[v];
     json scales = json::array();
     for (const PatchModel& patch : view.scales) {
-      scales.push_back({{"patchSize", patch.patchSize},
-                        {"landmarks", patch.landmarks},
-                        {"modes", patch.pca.modeCount()},
-                        {"experts", patch.hasExperts()}});
+      json scale = {{"patchSize", patch.patchSize},
+                    {"landmarks", patch.landmarks},
+                    {"modes", patch.pca.modeCount()},
+                    {"experts", patch.hasExperts()}};
+      if (patch.hasExperts()) scale["expertUnits"] = patch.experts.front().units();
+      scales.push_back(std::move(scale));
     }
     std::vector<int> visible;
     for (const bool flag : view.visible) visible.push_back(flag ? 1 : 0);
@@ -199,6 +202,11 @@ std::int64_t integer(const json& object, const char* key, const std::string& fie
   const auto v = value.get<std::int64_t>();
   if (v < min || v > max) fieldError(name, "out of range");
   return v;
+}
+
+// The units of a scale's experts: 1 before version 3, which gives them as "expertUnits".
+std::int64_t expertUnits(const json& scale, const std::string& field, std::uint32_t version) {
+  return version >= 3 ? integer(scale, "expertUnits", field, 1, kMaxExpertUnits) : 1;
 }
 
 double number(const json& object, const char* key, const std::string& field) {
@@ -292,9 +300,10 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t 
       addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scaleField);  // mean, alpha, P
       addValues(floats, static_cast<std::uint64_t>(modes), 1, scaleField);
       if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
-        // weights, gain and bias per landmark
-        addValues(floats, landmarks.size(), 2 + static_cast<std::uint64_t>(patchSize * patchSize),
-                  scaleField);
+        // per landmark: version 2, weights, gain and bias; version 3, K x (weights, bias, alpha)
+        const auto units = static_cast<std::uint64_t>(expertUnits(scales[s], scaleField, version));
+        addValues(floats, landmarks.size() * units,
+                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scaleField);
       }
     }
   }
@@ -346,7 +355,12 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t 
       patch.pca.variances.resize(modes);
       patch.alpha.assign(patch.landmarks.size(), Eigen::VectorXf(pixels));
       if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
-        patch.experts.assign(patch.landmarks.size(), PatchExpert{Eigen::VectorXf(pixels)});
+        const auto units = static_cast<Eigen::Index>(expertUnits(scales[s], scaleField, version));
+        PatchExpert expert;
+        expert.weights.resize(pixels, units);
+        expert.bias.resize(units);
+        expert.alpha.resize(units);
+        patch.experts.assign(patch.landmarks.size(), expert);
       }
       view.scales.push_back(std::move(patch));
     }
@@ -360,11 +374,17 @@ void readArray(Reader& reader, Eigen::PlainObjectBase<Derived>& destination) {
   reader.readInto(destination.data(), static_cast<std::size_t>(destination.size()));
 }
 
-void readExperts(Reader& reader, std::vector<PatchExpert>& experts) {
+void readExperts(Reader& reader, std::vector<PatchExpert>& experts, std::uint32_t version) {
   for (PatchExpert& expert : experts) {
     readArray(reader, expert.weights);
-    reader.readInto(&expert.gain, 1);
-    reader.readInto(&expert.bias, 1);
+    if (version >= 3) {
+      readArray(reader, expert.bias);
+      readArray(reader, expert.alpha);
+    } else {  // a linear filter, its logistic's gain and bias
+      float gainAndBias[2];
+      reader.readInto(gainAndBias, 2);
+      expert = PatchExpert::logistic(expert.weights.col(0), gainAndBias[0], gainAndBias[1]);
+    }
   }
 }
 
@@ -405,7 +425,7 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readArray(reader, patch.pca.components);
       readArray(reader, patch.pca.variances);
       for (Eigen::VectorXf& alpha : patch.alpha) readArray(reader, alpha);
-      readExperts(reader, patch.experts);
+      readExperts(reader, patch.experts, version);
     }
   }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
@@ -469,7 +489,8 @@ std::string serializeModel(const ClmModel& model) {
       for (const Eigen::VectorXf& alpha : patch.alpha) appendFloats(payload, alpha);
       for (const PatchExpert& expert : patch.experts) {
         appendFloats(payload, expert.weights);
-        appendFloats(payload, Eigen::Vector2f(expert.gain, expert.bias));
+        appendFloats(payload, expert.bias);
+        appendFloats(payload, expert.alpha);
       }
     }
   }

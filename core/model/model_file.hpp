@@ -16,8 +16,9 @@
 namespace clm3d {
 
 // 2: patch experts per scale, mirrored views stored as a reference to their source view.
-// Version 1 files (no experts, every view stored) still load.
-inline constexpr std::uint32_t kModelFormatVersion = 2;
+// 3: experts of several units (a scale's "expertUnits"; weights, biases and unit weights).
+// Version 1 files (no experts, every view stored) and version 2 files still load.
+inline constexpr std::uint32_t kModelFormatVersion = 3;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

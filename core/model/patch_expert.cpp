@@ -6,13 +6,27 @@
 
 namespace clm3d {
 
-float PatchExpert::response(float score) const {
-  return 1.0f / (1.0f + std::exp(-(gain * score + bias)));
+float PatchExpert::response(const float* scores) const {
+  float sum = 0.0f;
+  for (Eigen::Index k = 0; k < weights.cols(); ++k) {
+    sum += alpha[k] / (1.0f + std::exp(-(scores[k] + bias[k])));
+  }
+  return sum;
+}
+
+PatchExpert PatchExpert::logistic(const Eigen::VectorXf& filter, float gain, float bias) {
+  PatchExpert expert;
+  expert.weights = gain * filter;
+  expert.bias = Eigen::VectorXf::Constant(1, bias);
+  expert.alpha = Eigen::VectorXf::Ones(1);
+  return expert;
 }
 
 PatchExpert flipExpert(const PatchExpert& expert, int patchSize) {
   PatchExpert flipped = expert;
-  if (!expert.empty()) flipped.weights = flipPatch(expert.weights, patchSize);
+  for (Eigen::Index k = 0; k < expert.weights.cols(); ++k) {
+    flipped.weights.col(k) = flipPatch(expert.weights.col(k), patchSize);
+  }
   return flipped;
 }
 
