@@ -180,6 +180,12 @@ void addTrainCommand(CLI::App& root) {
       ->default_val(args->settings.expertRidge)
       ->check(CLI::Range(1e-4, 100.0));
   command
+      ->add_option("--expert-units", args->settings.expertUnits,
+                   "Units of each patch expert: 1 = a linear filter with a logistic output, more = "
+                   "a small neural field (units' sigmoid responses summed)")
+      ->default_val(args->settings.expertUnits)
+      ->check(CLI::Range(1, 16));
+  command
       ->add_option("--photo-jitter", args->settings.photoJitter,
                    "Perturbed placements (scale, roll, shift) of each training photo beside its "
                    "exact one")

@@ -42,6 +42,7 @@ void TrainSettings::validate() const {
   require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
   require(expertRadius >= 0 && expertRadius <= 16, "expert radius must be 0..16 pixels");
   require(expertRidge > 0 && expertRidge <= 100, "expert ridge must be in (0, 100]");
+  require(expertUnits >= 1 && expertUnits <= 16, "expert units must be 1..16");
   require(photoJitter >= 0 && photoJitter <= 20, "photo jitter must be 0..20");
   require(threads >= 0 && threads <= 64, "threads must be 0..64");
   const PerturbationSettings& p = perturbation;
@@ -116,7 +117,7 @@ std::string TrainSettings::toJson() const {
   j["hidden_share"] = hiddenShare;
   j["supersample"] = supersample;
   if (expertRadius > 0) {  // absent when off, so models trained without experts are unchanged
-    j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}};
+    j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}, {"units", expertUnits}};
   }
   j["photo_jitter"] = photoJitter;
   j["render_size"] = renderSize();
