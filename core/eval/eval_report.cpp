@@ -361,6 +361,8 @@ std::string formatBucketsText(const EvaluationReport& report) {
   if (!report.buckets) return {};
   const BucketedErrors& b = *report.buckets;
   const std::string title = bucketColumnTitle(b);
+  std::string cellTitle;  // in a Markdown cell, "|" is escaped
+  for (const char c : title) cellTitle += c == '|' ? std::string("\\|") : std::string(1, c);
   const auto range = [](const ErrorBucket& bucket) {
     return text::formatNumber(bucket.low) + " to " + text::formatNumber(bucket.high);
   };
@@ -399,8 +401,8 @@ std::string formatBucketsText(const EvaluationReport& report) {
         within, [](const ErrorSummary& s) { return formatShare(s.withinThreshold); }, false);
   }
   // Regions per bucket (thesis figure 5.13 per range of the column).
-  out +=
-      "\nmean point error per region and " + title + ":\n\n| prediction | " + title + " | frames |";
+  out += "\nmean point error per region and " + title + ":\n\n| prediction | " + cellTitle +
+         " | frames |";
   rule = "|---|---|---|";
   const auto& regions = report.sequences.empty() || report.sequences[0].summary.regions.empty()
                             ? std::vector<RegionError>{}
@@ -433,9 +435,7 @@ std::string formatBucketsCsv(const EvaluationReport& report) {
     for (const auto& region : report.sequences[0].summary.regions) out += "," + region.name;
   }
   out += "\n";
-  const auto cell = [](double v) {
-    return std::isfinite(v) ? fixed(v, 6) : std::string();
-  };
+  const auto cell = [](double v) { return std::isfinite(v) ? fixed(v, 6) : std::string(); };
   for (std::size_t p = 0; p < b.buckets.size(); ++p) {
     std::string label = report.sequences.at(p).label;
     std::replace_if(
