@@ -31,8 +31,10 @@ void CliProgress::operator()(double fraction, std::string_view stage) {
   const auto now = std::chrono::steady_clock::now();
   const bool done = fraction >= 1.0;
   if (drawn_ && !done && now - lastDraw_ < std::chrono::seconds(1)) return;
+  if (drawn_ && done && drewDone_) return;  // the end is said once
   lastDraw_ = now;
   drawn_ = true;
+  drewDone_ = done;
   std::ostringstream line;
   line << '\r' << stage << ": " << std::fixed << std::setprecision(1)
        << 100.0 * (std::isfinite(fraction) ? fraction : 0.0) << '%';

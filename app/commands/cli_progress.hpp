@@ -48,7 +48,8 @@ class CliProgress {
   std::function<std::string()> detail_;
   std::mutex mutex_;
   std::chrono::steady_clock::time_point lastDraw_{};
-  bool drawn_ = false;  // a meter line is open
+  bool drawn_ = false;     // a meter line is open
+  bool drewDone_ = false;  // ... and it shows 100%
 };
 
 }  // namespace clm3d::cli
