@@ -14,14 +14,18 @@ namespace {
 
 using test::runClm3d;
 
+// A lossless 32x24 video of `frames` grey frames, each a different shade.
+void writeGreyVideo(const std::filesystem::path& video, int frames, int step) {
+  VideoWriter writer(video, 32, 24, 25.0);
+  for (int i = 0; i < frames; ++i)
+    writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(step * i)));
+  writer.close();
+}
+
 TEST(FramesCli, WritesEveryNthFrame) {
   test::TempDir dir;
   const auto video = dir / "v.avi";
-  {
-    VideoWriter writer(video, 32, 24, 25.0);
-    for (int i = 0; i < 7; ++i) writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(30 * i)));
-    writer.close();
-  }
+  writeGreyVideo(video, 7, 30);
   const auto result = runClm3d("frames --video " + video.string() + " --out " +
                                (dir / "frames").string() + " --every 2 --format jpg --quiet");
   ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -36,11 +40,7 @@ TEST(FramesCli, WritesEveryNthFrame) {
 TEST(FramesCli, ProgressIsOneMeterLineEndedOnce) {
   test::TempDir dir;
   const auto video = dir / "v.avi";
-  {
-    VideoWriter writer(video, 32, 24, 25.0);
-    for (int i = 0; i < 3; ++i) writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(60 * i)));
-    writer.close();
-  }
+  writeGreyVideo(video, 3, 60);
   const auto result =
       runClm3d("frames --video " + video.string() + " --out " + (dir / "frames").string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
