@@ -60,67 +60,58 @@ struct Option : OptionSpec {
   std::string defaultText() const { return get(Settings{}); }
 };
 
-// Builders of the common kinds from a field accessor, e.g. [](S& s) -> int& { return s.scales; }.
-template <typename Settings, typename Field>
-Option<Settings> integerOption(OptionSpec spec, Field field) {
-  spec.kind = OptionKind::Integer;
-  spec.decimals = 0;
+// An option of `kind` reading and writing one field: `field` gives the field of a settings struct,
+// e.g. [](S& s) -> int& { return s.scales; }; `toText` writes its value as text and `parse` reads
+// text back (an InputError naming the option when it is not valid).
+template <typename Settings, typename Field, typename ToText, typename Parse>
+Option<Settings> fieldOption(OptionSpec spec, OptionKind kind, Field field, ToText toText,
+                             Parse parse) {
+  spec.kind = kind;
   Option<Settings> option{std::move(spec), {}, {}};
-  option.get = [field](const Settings& settings) {
+  option.get = [field, toText](const Settings& settings) {
     Settings copy = settings;
-    return std::to_string(field(copy));
+    return toText(field(copy));
   };
-  option.set = [field, spec = static_cast<OptionSpec>(option)](Settings& s, std::string_view text) {
+  option.set = [field, parse, described = static_cast<OptionSpec>(option)](Settings& s,
+                                                                           std::string_view text) {
     using Value = std::remove_reference_t<decltype(field(s))>;
-    field(s) = static_cast<Value>(parseOptionInteger(spec, text));
+    field(s) = static_cast<Value>(parse(described, text));
   };
   return option;
 }
 
+// The common kinds.
+template <typename Settings, typename Field>
+Option<Settings> integerOption(OptionSpec spec, Field field) {
+  spec.decimals = 0;
+  return fieldOption<Settings>(
+      std::move(spec), OptionKind::Integer, field, [](auto value) { return std::to_string(value); },
+      parseOptionInteger);
+}
+
 template <typename Settings, typename Field>
 Option<Settings> realOption(OptionSpec spec, Field field) {
-  spec.kind = OptionKind::Real;
-  Option<Settings> option{std::move(spec), {}, {}};
-  option.get = [field](const Settings& settings) {
-    Settings copy = settings;
-    return optionRealText(field(copy));
-  };
-  option.set = [field, spec = static_cast<OptionSpec>(option)](Settings& s, std::string_view text) {
-    field(s) = parseOptionReal(spec, text);
-  };
-  return option;
+  return fieldOption<Settings>(std::move(spec), OptionKind::Real, field, optionRealText,
+                               parseOptionReal);
+}
+
+template <typename Settings, typename Field>
+Option<Settings> realListOption(OptionSpec spec, Field field) {
+  return fieldOption<Settings>(std::move(spec), OptionKind::RealList, field, optionRealListText,
+                               parseOptionRealList);
 }
 
 // `inverted`: the option says the opposite of the field (e.g. --no-mirror for mirrorRightViews).
 template <typename Settings, typename Field>
 Option<Settings> flagOption(OptionSpec spec, Field field, bool inverted = false) {
-  spec.kind = OptionKind::Flag;
   spec.minimum = 0.0;
   spec.maximum = 1.0;
-  Option<Settings> option{std::move(spec), {}, {}};
-  option.get = [field, inverted](const Settings& settings) {
-    Settings copy = settings;
-    return std::string(field(copy) != inverted ? "true" : "false");
-  };
-  option.set = [field, inverted, spec = static_cast<OptionSpec>(option)](Settings& s,
-                                                                         std::string_view text) {
-    field(s) = parseOptionFlag(spec, text) != inverted;
-  };
-  return option;
-}
-
-template <typename Settings, typename Field>
-Option<Settings> realListOption(OptionSpec spec, Field field) {
-  spec.kind = OptionKind::RealList;
-  Option<Settings> option{std::move(spec), {}, {}};
-  option.get = [field](const Settings& settings) {
-    Settings copy = settings;
-    return optionRealListText(field(copy));
-  };
-  option.set = [field, spec = static_cast<OptionSpec>(option)](Settings& s, std::string_view text) {
-    field(s) = parseOptionRealList(spec, text);
-  };
-  return option;
+  return fieldOption<Settings>(
+      std::move(spec), OptionKind::Flag, field,
+      [inverted](bool value) { return std::string(value != inverted ? "true" : "false"); },
+      [inverted](const OptionSpec& described, std::string_view text) {
+        return parseOptionFlag(described, text) != inverted;
+      });
 }
 
 // A Choice option: `get` says the current value, `apply` stores a value already checked against
@@ -130,8 +121,10 @@ Option<Settings> choiceOption(OptionSpec spec, std::function<std::string(const S
                               std::function<void(Settings&, const std::string&)> apply) {
   spec.kind = OptionKind::Choice;
   Option<Settings> option{std::move(spec), std::move(get), {}};
-  option.set = [apply = std::move(apply), spec = static_cast<OptionSpec>(option)](
-                   Settings& s, std::string_view text) { apply(s, parseOptionChoice(spec, text)); };
+  option.set = [apply = std::move(apply), described = static_cast<OptionSpec>(option)](
+                   Settings& s, std::string_view text) {
+    apply(s, parseOptionChoice(described, text));
+  };
   return option;
 }
 

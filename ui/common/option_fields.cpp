@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
@@ -114,6 +115,18 @@ QString optionTooltip(const OptionSpec& option, const std::string& defaultText,
   }
   return QObject::tr("%1\n\nclm3d %2 --%3 (default %4%5)")
       .arg(qText(option.help), command, qText(option.name), qText(defaultText), range);
+}
+
+QFormLayout* optionGroupForm(std::map<std::string, QFormLayout*>& groups, const std::string& group,
+                             QWidget* parent, const std::function<void(QGroupBox*)>& place) {
+  QFormLayout*& form = groups[group];
+  if (form == nullptr) {
+    auto* box = new QGroupBox(qText(group), parent);
+    form = new QFormLayout(box);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    place(box);
+  }
+  return form;
 }
 
 void addOptionRow(QFormLayout* form, const OptionSpec& option, QWidget* field,

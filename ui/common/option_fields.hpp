@@ -8,11 +8,13 @@
 #include <QString>
 #include <QWidget>
 #include <functional>
+#include <map>
 #include <string>
 
 #include "core/common/option_table.hpp"
 
 class QFormLayout;
+class QGroupBox;
 
 namespace clm3d::ui {
 
@@ -25,6 +27,10 @@ void setOptionFieldText(QWidget* field, const std::string& text);
 // "help\n\nclm3d COMMAND --name (default D, range A to B)".
 QString optionTooltip(const OptionSpec& option, const std::string& defaultText,
                       const QString& command);
+// The form of the section `group` in `groups` (section name -> form), made on first use: a group
+// box titled `group`, owned by `parent`, that `place` puts into the caller's layout.
+QFormLayout* optionGroupForm(std::map<std::string, QFormLayout*>& groups, const std::string& group,
+                             QWidget* parent, const std::function<void(QGroupBox*)>& place);
 // Adds the row (label, field) to `form`, with the tooltip on both; a flag's label is its check
 // box's text.
 void addOptionRow(QFormLayout* form, const OptionSpec& option, QWidget* field,

@@ -23,12 +23,8 @@ TrackerSettingsForm::TrackerSettingsForm(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   std::map<std::string, QFormLayout*> groups;
   for (const TrackerOption& option : trackerOptions()) {
-    QFormLayout*& form = groups[option.group];
-    if (form == nullptr) {
-      auto* box = new QGroupBox(QString::fromStdString(option.group), this);
-      form = new QFormLayout(box);
-      layout->addWidget(box);
-    }
+    QFormLayout* form = optionGroupForm(groups, option.group, this,
+                                        [layout](QGroupBox* box) { layout->addWidget(box); });
     QWidget* widget = makeOptionField(option, this, [this] { emit changed(); });
     addOptionRow(form, option, widget, tooltipFor(option));
     fields_.push_back({&option, widget});

@@ -26,14 +26,10 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
       {"Views", first}, {"Patches", first}, {"Experts", first}};
   std::map<std::string, QFormLayout*> groups;
   for (const TrainOption& option : trainOptions()) {
-    QFormLayout*& form = groups[option.group];
-    if (form == nullptr) {
-      auto* box = new QGroupBox(QString::fromStdString(option.group), this);
-      form = new QFormLayout(box);
-      form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    QFormLayout* form = optionGroupForm(groups, option.group, this, [&](QGroupBox* box) {
       const auto column = columnOf.find(option.group);
       (column != columnOf.end() ? column->second : second)->addWidget(box);
-    }
+    });
     QWidget* field = makeOptionField(option, this, [] {});
     addOptionRow(form, option, field,
                  optionTooltip(option, option.defaultText(), QStringLiteral("train")));
