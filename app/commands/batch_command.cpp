@@ -10,6 +10,7 @@
 #include <iostream>
 #include <set>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "app/commands/interrupt_scope.hpp"
@@ -101,11 +102,10 @@ void runLocal(const BatchArgs& args) {
   settings.track.fit = settings.image.fit;
   settings.track.detector = settings.image.detector;
   InterruptScope interrupt;
-  const auto progress = [&args](double, std::string_view stage) {
-    if (!args.quiet) std::cerr << stage << '\n';
-  };
+  CliProgress progress(CliProgress::Style::Lines, args.quiet);
   const auto begin = std::chrono::steady_clock::now();
-  const BatchRunSummary summary = runBatch(model, job, settings, progress, &interrupt.token());
+  const BatchRunSummary summary =
+      runBatch(model, job, settings, progress.callback(), &interrupt.token());
   interrupt.release();
   for (const BatchRow& row : summary.rows) {
     if (row.status == ImageFitStatus::Error) std::cerr << "error: " << row.error << '\n';

@@ -1,6 +1,8 @@
-// clm3d eval: compares one or more tracks CSVs against a ground-truth one with the error of thesis
-// eq. 5.1 (docs/evaluation.md) and prints each prediction's summary, then Welch's t-test (two
-// predictions) or one-way ANOVA (three or more); optionally JSON, plots and a report file.
+// clm3d eval: compares one or more trackers' tracks CSVs against ground truth with the error of
+// thesis eq. 5.1 (docs/evaluation.md) and prints each prediction's summary, then Welch's t-test
+// (two predictions) or one-way ANOVA (three or more); several sequences pool per tracker (repeated
+// --truth, each tracker's --pred files in the same order); optionally the errors bucketed by a
+// truth column (e.g. |yaw|), JSON, plots and report files. Everything is core/eval/eval_report.hpp.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "core/common/error.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/scheme/scheme.hpp"
@@ -18,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct EvalArgs {
-  fs::path truth;
+  std::vector<fs::path> truths;
   std::vector<fs::path> predictions;
   std::vector<std::string> labels;
   std::string scheme = "thesis25";
@@ -26,14 +29,42 @@ struct EvalArgs {
   fs::path plotDir;
   fs::path out;
   double threshold = 0.18;
+  std::string bucketBy;
+  bool bucketAbsolute = false;
+  double bucketWidth = 0.0;
+  std::vector<double> bucketEdges;
+  fs::path bucketCsv;
 };
 
 void runEval(const EvalArgs& args) {
+  std::vector<TrackerFiles> trackers;
+  try {
+    trackers = groupPredictions(args.truths.size(), args.predictions, args.labels);
+  } catch (const InputError& e) {
+    throw CLI::ValidationError("--truth/--pred/--label", e.what());
+  }
+  const bool bucketed = !args.bucketBy.empty();
+  if (!bucketed && (args.bucketWidth != 0.0 || !args.bucketEdges.empty() || args.bucketAbsolute ||
+                    !args.bucketCsv.empty())) {
+    throw CLI::ValidationError("--bucket-by",
+                               "--bucket-width, --bucket-edges, --bucket-abs and --bucket-csv "
+                               "need --bucket-by COLUMN");
+  }
+  if (bucketed && (args.bucketWidth != 0.0) == !args.bucketEdges.empty()) {
+    throw CLI::ValidationError("--bucket-by",
+                               "give either --bucket-width W or --bucket-edges A,B,...");
+  }
+  BucketSpec buckets;
+  buckets.column = args.bucketBy;
+  buckets.absolute = args.bucketAbsolute;
+  buckets.width = args.bucketWidth;
+  buckets.edges = args.bucketEdges;
+
   const Scheme scheme = Scheme::byNameOrPath(args.scheme);
   EvalOptions options;
   options.threshold = args.threshold;
   const auto report =
-      evaluateTrackFiles(args.truth, args.predictions, args.labels, scheme, options);
+      evaluateTrackFiles(args.truths, trackers, scheme, options, bucketed ? &buckets : nullptr);
 
   // With --json, stdout holds only the JSON document; where files went is said on stderr.
   std::ostream& notes = args.json ? std::cerr : std::cout;
@@ -45,6 +76,10 @@ void runEval(const EvalArgs& args) {
   if (!args.out.empty()) {
     writeReportJson(args.out, report);
     notes << "report: " << args.out.string() << '\n';
+  }
+  if (!args.bucketCsv.empty()) {
+    writeBucketsCsv(args.bucketCsv, report);
+    notes << "buckets: " << args.bucketCsv.string() << '\n';
   }
   if (!args.plotDir.empty()) {
     const auto files = writeEvaluationPlots(args.plotDir, report);
@@ -61,15 +96,19 @@ void addEvalCommand(CLI::App& root) {
   CLI::App* command = root.add_subcommand(
       "eval",
       "Compare tracker outputs (tracks CSV) with ground truth: error of thesis eq. 5.1, "
-      "convergence, regions, significance tests and plots");
-  command->add_option("--truth", args->truth, "Ground-truth tracks CSV")->required();
+      "convergence, regions, errors by pose, significance tests and plots");
+  command
+      ->add_option("--truth", args->truths,
+                   "Ground-truth tracks CSV (repeat for several sequences, pooled per tracker)")
+      ->required();
   command
       ->add_option("--pred", args->predictions,
-                   "Predicted tracks CSV (repeat for several trackers to compare)")
+                   "Predicted tracks CSV (repeat for several trackers to compare; with N --truth "
+                   "files each tracker gives N, in the truths' order)")
       ->required();
   command->add_option("--label", args->labels,
-                      "Name of each prediction in the report and plots (one per --pred; "
-                      "default: the file name)");
+                      "Name of each tracker in the report and plots (one per tracker; default: "
+                      "its first file's name)");
   command
       ->add_option("--scheme", args->scheme,
                    "Landmark scheme: thesis25, ibug68 or a scheme JSON file")
@@ -79,6 +118,21 @@ void addEvalCommand(CLI::App& root) {
                    "Error at which a point counts as found and a frame as converged")
       ->default_val(0.18)
       ->check(CLI::Range(1e-6, 100.0));
+  command->add_option("--bucket-by", args->bucketBy,
+                      "Break the errors down by this ground-truth column (yaw, pitch, roll, "
+                      "frame, ... or an extra column)");
+  command->add_flag("--bucket-abs", args->bucketAbsolute,
+                    "Bucket by the column's absolute value (e.g. |yaw|)");
+  command
+      ->add_option("--bucket-width", args->bucketWidth,
+                   "Buckets of this width, on multiples of it, covering every frame")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--bucket-edges", args->bucketEdges,
+                   "Explicit bucket edges, increasing (e.g. 0,15,30,45,60,80)")
+      ->delimiter(',');
+  command->add_option("--bucket-csv", args->bucketCsv,
+                      "Also write the buckets' figures as CSV (one row per tracker and bucket)");
   command->add_flag("--json", args->json, "Print the report as JSON instead of text");
   command->add_option("--plot", args->plotDir,
                       "Folder for cdf.png, error-per-frame.png and regions.png");

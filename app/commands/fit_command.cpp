@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "app/commands/interrupt_scope.hpp"
@@ -80,11 +81,9 @@ void runBatchFit(const FitArgs& args) {
   }
   const ClmModel model = loadModel(args.model);
   InterruptScope interrupt;
-  const auto progress = [&args](double fraction, std::string_view stage) {
-    if (!args.quiet && fraction > 0.0) std::cerr << stage << '\n';
-  };
+  CliProgress progress(CliProgress::Style::Lines, args.quiet);
   const BatchFitSummary summary =
-      fitImages(model, job, imageFitSettings(args), progress, &interrupt.token());
+      fitImages(model, job, imageFitSettings(args), progress.callback(), &interrupt.token());
   interrupt.release();
   double fitSum = 0.0;
   for (const ImageFitOutcome& outcome : summary.outcomes) {

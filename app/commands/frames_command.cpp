@@ -1,12 +1,12 @@
 // clm3d frames: a video's frames as numbered images (frame_000042.png), the names `clm3d truth
 // --pts` gives the frames' points, so image-only tools can read a video and their results pair
 // with a track by file stem. All of it is core/track/frame_export.hpp.
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt_scope.hpp"
 #include "core/track/frame_export.hpp"
@@ -28,16 +28,10 @@ void runFrames(const FramesArgs& args) {
   FrameExportSettings settings = args.settings;
   settings.extension = "." + args.format;
   InterruptScope interrupt;
-  auto lastReport = std::chrono::steady_clock::now();
-  const auto progress = [&](double fraction, std::string_view stage) {
-    const auto now = std::chrono::steady_clock::now();
-    if (args.quiet || (now - lastReport < std::chrono::seconds(1) && fraction < 1.0)) return;
-    lastReport = now;
-    std::cerr << '\r' << stage << ": " << static_cast<int>(fraction * 100.0) << '%' << std::flush;
-  };
+  CliProgress progress(CliProgress::Style::Meter, args.quiet);
   const FrameExportSummary summary =
-      exportFrames(args.video, args.out, settings, progress, &interrupt.token());
-  if (!args.quiet) std::cerr << '\n';
+      exportFrames(args.video, args.out, settings, progress.callback(), &interrupt.token());
+  progress.finish();
   std::cout << "wrote " << summary.written << " of " << summary.videoFrames << " frames of "
             << args.video.string() << " to " << args.out.string() << '\n';
 }

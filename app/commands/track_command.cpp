@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "app/commands/interrupt_scope.hpp"
@@ -55,15 +56,10 @@ void runTrack(const TrackArgs& args) {
 
   InterruptScope interrupt;
   const auto begin = std::chrono::steady_clock::now();
-  auto lastReport = begin;
   TrackTable table;
-  const auto progress = [&](double fraction, std::string_view) {
-    const auto now = std::chrono::steady_clock::now();
-    if (args.quiet || (now - lastReport < std::chrono::seconds(1) && fraction < 1.0)) return;
-    lastReport = now;
-    std::cerr << "\rtracking: " << std::fixed << std::setprecision(1) << 100.0 * fraction << "% ("
-              << table.rows.size() << " frames)" << std::flush;
-  };
+  // trackVideo reports from this thread after each frame, so the row count is safe to read.
+  CliProgress progress(CliProgress::Style::Meter, args.quiet);
+  progress.setDetail([&table] { return "(" + std::to_string(table.rows.size()) + " frames)"; });
   const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
     if (!overlay) return;
     cv::Mat drawn = frame.clone();
@@ -73,13 +69,13 @@ void runTrack(const TrackArgs& args) {
   TrackSummary summary;
   bool cancelled = false;
   try {
-    summary = trackVideo(args.video, model, settings, table, perFrame, progress, &interrupt.token(),
-                         initial);
+    summary = trackVideo(args.video, model, settings, table, perFrame, progress.callback(),
+                         &interrupt.token(), initial);
   } catch (const Cancelled&) {
     cancelled = true;
   }
   interrupt.release();
-  if (!args.quiet) std::cerr << '\n';
+  progress.finish();
   writeTrackTable(args.out, table);
   if (overlay) overlay->close();
   if (cancelled) {

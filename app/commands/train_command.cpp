@@ -12,9 +12,11 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt_scope.hpp"
+#include "app/commands/option_cli.hpp"
 #include "core/common/error.hpp"
 #include "core/model/model_file.hpp"
 #include "core/train/report.hpp"
+#include "core/train/train_options.hpp"
 #include "core/train/trainer.hpp"
 
 namespace clm3d::cli {
@@ -24,10 +26,7 @@ namespace fs = std::filesystem;
 
 struct TrainArgs {
   fs::path dataset, out, report;
-  TrainSettings settings;
-  bool noMirror = false;
-  bool noAugmentation = false;
-  int samples = 5;
+  TrainSettings settings;  // filled by the options of core/train/train_options
 };
 
 // Prints the model summary the issue asks for: views, modes per view/scale, patches per view.
@@ -50,9 +49,6 @@ void printSummary(const ClmModel& model, const fs::path& out, double seconds) {
 }
 
 void runTrain(TrainArgs& args) {
-  args.settings.mirrorRightViews = !args.noMirror;
-  args.settings.samplesPerView = args.samples;
-  args.settings.augmentationFromManifest = !args.noAugmentation;
   InterruptScope interrupt;
   const auto start = std::chrono::steady_clock::now();
   std::mutex printMutex;
@@ -115,82 +111,9 @@ void addTrainCommand(CLI::App& root) {
   command->add_option("--dataset", args->dataset, "Dataset manifest (JSON)")->required();
   command->add_option("--out", args->out, "Model file to write (.clm3d)")->required();
   command->add_option("--report", args->report, "Folder for the report pictures");
-  command->add_option("--threads", args->settings.threads, "Worker threads (0 = one per core)")
-      ->check(CLI::Range(0, 64));
-  command->add_option("--seed", args->settings.seed, "Random seed (same seed, same model)");
-  command->add_flag("--single-view", args->settings.singleView,
-                    "Train the single-view 2D baseline (frontal texture model, 2D shape model)");
-  command->add_option("--views-yaw", args->settings.yawsDeg, "View yaw centres in degrees")
-      ->delimiter(',');
-  command->add_option("--views-pitch", args->settings.pitchesDeg, "View pitch centres in degrees")
-      ->delimiter(',');
-  command->add_option("--scales", args->settings.scales, "Pyramid scales per view")
-      ->check(CLI::Range(1, 5));
-  command->add_option("--patch-size", args->settings.patchSize, "Patch size in pixels")
-      ->check(CLI::Range(4, 64));
-  command->add_option("--samples", args->samples, "Perturbed renders per subject and view")
-      ->check(CLI::Range(1, 100));
-  command
-      ->add_option("--view-coverage", args->settings.perturbation.viewCoverage,
-                   "Share of half the spacing of the view centres that the pitch/yaw jitter of "
-                   "each view's renders covers (0 = +-5 degrees only)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.5));
-  command
-      ->add_option("--texture-variance", args->settings.textureVariance,
-                   "Variance kept by each patch PCA")
-      ->check(CLI::Range(0.01, 1.0));
-  command
-      ->add_option("--shape-variance", args->settings.shape.varianceKept,
-                   "Variance kept by the shape PCA")
-      ->check(CLI::Range(0.01, 1.0));
-  command->add_flag("--no-mirror", args->noMirror,
-                    "Render the right-side views instead of mirroring");
-  command->add_flag("--no-augmentation", args->noAugmentation,
-                    "Switch off all appearance augmentation for this run, the default cluttered "
-                    "background included: renders on flat black");
-  command->add_flag("--mirror-shapes", args->settings.shape.mirror,
-                    "Add a left/right mirrored copy of every training shape to the shape model");
-  command
-      ->add_option("--shape-limit", args->settings.shape.limitSd,
-                   "Shape parameter limit in standard deviations")
-      ->default_val(3.0)
-      ->check(CLI::Range(0.5, 10.0));
-  command
-      ->add_option("--texture-max-modes", args->settings.textureMaxModes,
-                   "At most this many modes per patch PCA (0 = no cap; smaller models)")
-      ->default_val(0)
-      ->check(CLI::Range(0, 1000));
-  command
-      ->add_option("--hidden-share", args->settings.hiddenShare,
-                   "A landmark hidden in more than this share of a view's renders is left out of "
-                   "the view (1 = keep every landmark: hidden-point removal off)")
-      ->default_val(0.5)
-      ->check(CLI::Range(0.0, 1.0));
-  command
-      ->add_option("--expert-radius", args->settings.expertRadius,
-                   "Train a discriminative patch expert per landmark, view and scale from "
-                   "displacements of up to this many pixels (0 = none: a model for the template "
-                   "optimisers only; rlms needs experts)")
-      ->default_val(args->settings.expertRadius)
-      ->check(CLI::Range(0, 16));
-  command
-      ->add_option("--expert-ridge", args->settings.expertRidge,
-                   "Ridge weight of the experts' regression, relative to the data's mean variance")
-      ->default_val(args->settings.expertRidge)
-      ->check(CLI::Range(1e-4, 100.0));
-  command
-      ->add_option("--expert-units", args->settings.expertUnits,
-                   "Units of each patch expert: 1 = a linear filter with a logistic output, more = "
-                   "a small neural field (units' sigmoid responses summed)")
-      ->default_val(args->settings.expertUnits)
-      ->check(CLI::Range(1, 16));
-  command
-      ->add_option("--photo-jitter", args->settings.photoJitter,
-                   "Perturbed placements (scale, roll, shift) of each training photo beside its "
-                   "exact one")
-      ->default_val(args->settings.photoJitter)
-      ->check(CLI::Range(0, 20));
+  // Every training setting, from the one table the studio's form and TrainSettings::validate
+  // use too (names, help, defaults, ranges).
+  for (const TrainOption& option : trainOptions()) addTableOption(*command, option, args->settings);
   command->callback([args] { runTrain(*args); });
 }
 

@@ -8,13 +8,13 @@
 #include <fstream>
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/dataset/obj_vertex_picker.hpp"
 
@@ -172,24 +172,19 @@ std::vector<int> readLandmarkVertexTable(const fs::path& path, const std::string
   if (!in) throwInputError(path, "cannot read the file");
   std::ostringstream text;
   text << in.rdbuf();
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {  // also out_of_range (huge numbers)
-    throwInputError(path, std::string("not valid JSON: ") + e.what());
-  }
+  const JsonValue root = parseJsonText(text.str(), path.string());
   if (!root.is_object()) throwInputError(path, "expected a JSON object");
-  if (!root.contains("scheme") || !root["scheme"].is_string()) {
-    throwInputError(path, "field scheme: missing or not a string");
+  JsonFields fields(root, path.string());
+  const std::string scheme = fields.requiredString("scheme");
+  if (scheme != schemeName) {
+    fields.fail("scheme", "is '" + scheme + "' but the dataset's scheme is '" + schemeName + "'");
   }
-  if (root["scheme"].get<std::string>() != schemeName) {
-    throwInputError(path, "field scheme: is '" + root["scheme"].get<std::string>() +
-                              "' but the dataset's scheme is '" + schemeName + "'");
-  }
-  if (!root.contains("vertices") || !root["vertices"].is_array()) {
-    throwInputError(path, "field vertices: missing or not an array");
-  }
-  const auto& vertices = root["vertices"];
+  // Documentation for people: the mesh the indices refer to and notes (any JSON) on how they were
+  // picked.
+  (void)fields.string("mesh", std::string(), true);
+  fields.allow({"notes"});
+  const auto& vertices = fields.array("vertices");
+  fields.rejectUnknown();
   if (static_cast<int>(vertices.size()) != schemeSize) {
     throwInputError(path, "field vertices: has " + std::to_string(vertices.size()) +
                               " entries, the scheme has " + std::to_string(schemeSize) + " points");

@@ -5,12 +5,12 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/seed_list.hpp"
 #include "core/scheme/scheme.hpp"
@@ -19,99 +19,17 @@
 
 namespace clm3d {
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = JsonValue;
 
 namespace {
 
-// Reads the fields of one JSON object, naming each by its path ("scans[2].mesh") in errors, and
-// rejects fields it does not know (a typo must not silently fall back to a default).
-class Fields {
+// The fields of one manifest object (core/common/json_fields: errors name the manifest and the
+// field, unknown fields are refused), and the paths it names, relative to the manifest's folder.
+class Fields : public JsonFields {
  public:
   Fields(const json& object, std::string path, const fs::path& file, const fs::path& folder)
-      : object_(object), path_(std::move(path)), file_(file), folder_(folder) {
-    if (!object_.is_object()) fail(path_.empty() ? "the manifest" : path_, "expected an object");
-  }
+      : JsonFields(object, file.string(), std::move(path)), folder_(folder) {}
 
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throwInputError(file_, "field " + field + ": " + what);
-  }
-  std::string name(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  bool has(const std::string& key) {
-    known_.insert(key);
-    return object_.contains(key);
-  }
-  const json& at(const std::string& key) {
-    if (!has(key)) fail(name(key), "missing (required)");
-    return object_.at(key);
-  }
-
-  std::string string(const std::string& key, const std::string& fallback, bool required = false) {
-    if (!required && !has(key)) return fallback;
-    const json& v = at(key);
-    if (!v.is_string()) fail(name(key), "expected a string, got " + std::string(v.type_name()));
-    std::string s = v.get<std::string>();
-    if (s.empty()) fail(name(key), "must not be empty");
-    return s;
-  }
-  std::string requiredString(const std::string& key) { return string(key, {}, true); }
-
-  long long integer(const std::string& key, long long fallback, long long lo, long long hi) {
-    if (!has(key)) return fallback;
-    const json& v = object_.at(key);
-    if (!v.is_number_integer()) {
-      fail(name(key), "expected an integer, got " + std::string(v.type_name()));
-    }
-    if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
-      fail(name(key), "must be at most " + std::to_string(hi));
-    }
-    const long long x = v.get<long long>();
-    if (x < lo || x > hi) {
-      fail(name(key), "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                          std::to_string(x));
-    }
-    return x;
-  }
-  std::uint64_t unsignedInteger(const std::string& key, std::uint64_t fallback) {
-    if (!has(key)) return fallback;
-    const json& v = object_.at(key);
-    if (!v.is_number_unsigned()) fail(name(key), "expected a non-negative integer");
-    return v.get<std::uint64_t>();
-  }
-  double number(const std::string& key, double fallback, double lo, double hi) {
-    if (!has(key)) return fallback;
-    const json& v = object_.at(key);
-    if (!v.is_number()) fail(name(key), "expected a number, got " + std::string(v.type_name()));
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x < lo || x > hi) {
-      std::ostringstream s;
-      s << "must be in [" << lo << ", " << hi << "], got " << x;
-      fail(name(key), s.str());
-    }
-    return x;
-  }
-  bool boolean(const std::string& key, bool fallback) {
-    if (!has(key)) return fallback;
-    const json& v = object_.at(key);
-    if (!v.is_boolean())
-      fail(name(key), "expected true or false, got " + std::string(v.type_name()));
-    return v.get<bool>();
-  }
-  std::vector<std::string> strings(const std::string& key, std::vector<std::string> fallback) {
-    if (!has(key)) return fallback;
-    const json& v = object_.at(key);
-    if (!v.is_array()) fail(name(key), "expected an array of strings");
-    std::vector<std::string> out;
-    std::set<std::string> seen;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const std::string item = name(key) + "[" + std::to_string(i) + "]";
-      if (!v[i].is_string()) fail(item, "expected a string, got " + std::string(v[i].type_name()));
-      std::string s = v[i].get<std::string>();
-      if (s.empty()) fail(item, "must not be empty");
-      if (!seen.insert(s).second) fail(item, "'" + s + "' is listed twice");
-      out.push_back(std::move(s));
-    }
-    return out;
-  }
   // A path relative to the manifest's folder (or absolute), made absolute; must exist.
   fs::path path(const std::string& key, bool directoryAllowed = false) {
     const fs::path p = (folder_ / fs::path(requiredString(key))).lexically_normal();
@@ -123,28 +41,10 @@ class Fields {
     }
     return p;
   }
-  // After all reads: any other key is an error.
-  void rejectUnknown() const {
-    for (const auto& [key, value] : object_.items()) {
-      if (!known_.count(key)) fail(name(key), "unknown field");
-    }
-  }
 
  private:
-  const json& object_;
-  std::string path_;
-  fs::path file_;
   fs::path folder_;
-  std::set<std::string> known_;
 };
-
-const json& arrayField(Fields& fields, const std::string& key) {
-  static const json empty = json::array();
-  if (!fields.has(key)) return empty;
-  const json& v = fields.at(key);
-  if (!v.is_array()) fields.fail(key, "expected an array, got " + std::string(v.type_name()));
-  return v;
-}
 
 void checkNameSegment(Fields& f, const std::string& key, const std::string& value) {
   if (value.find('/') != std::string::npos) f.fail(f.name(key), "must not contain '/'");
@@ -316,7 +216,8 @@ PhotoSource parsePhotos(Fields& f) {
 MakeHumanSource parseMakeHuman(Fields& f) {
   MakeHumanSource source;
   source.root = f.path("root", /*directoryAllowed=*/true);
-  if (!fs::is_directory(source.root)) f.fail(f.name("root"), "not a folder: " + source.root.string());
+  if (!fs::is_directory(source.root))
+    f.fail(f.name("root"), "not a folder: " + source.root.string());
   for (const char* part : {"base/base.obj", "skins", "eyes", "targets"}) {
     if (!fs::exists(source.root / part)) {
       f.fail(f.name("root"), "not a MakeHuman data folder (no " + std::string(part) + " in " +
@@ -352,7 +253,8 @@ MakeHumanSource parseMakeHuman(Fields& f) {
     std::size_t begin = 0;
     for (;;) {
       const std::size_t plus = expression.find('+', begin);
-      const std::string unit = expression.substr(begin, plus == std::string::npos ? plus : plus - begin);
+      const std::string unit =
+          expression.substr(begin, plus == std::string::npos ? plus : plus - begin);
       if (unit.empty() || !fs::is_regular_file(units / (unit + ".target"))) {
         f.fail(item, "expected \"neutral\" or expression targets of " + units.string() +
                          " joined by '+', but '" + unit + "' is not one");
@@ -389,14 +291,9 @@ std::string makehumanSubjectId(std::uint64_t seed, const std::string& expression
 }
 
 DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& e) {  // also out_of_range: a number too large for a double
-    std::string what = e.what();
-    const auto bracket = what.find("] ");
-    if (bracket != std::string::npos) what = what.substr(bracket + 2);
-    throwInputError(file, "not valid JSON: " + what);
+  const json root = parseJsonText(text, file.string());
+  if (!root.is_object()) {
+    throwInputError(file, "field the manifest: expected an object");
   }
   const fs::path folder = fs::absolute(file).parent_path();
   Fields top(root, "", file, folder);
@@ -425,7 +322,7 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     if (!inserted) top.fail(field, "subject '" + id + "' is already defined by " + it->second);
   };
 
-  const json& scans = arrayField(top, "scans");
+  const json& scans = top.optionalArray("scans");
   for (std::size_t i = 0; i < scans.size(); ++i) {
     Fields f(scans[i], "scans[" + std::to_string(i) + "]", file, folder);
     manifest.scans.push_back(parseScan(f));
@@ -433,7 +330,7 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     addId(scanSubjectId(manifest.scans.back()), f.name("subject"));
   }
 
-  const json& procedural = arrayField(top, "procedural");
+  const json& procedural = top.optionalArray("procedural");
   for (std::size_t i = 0; i < procedural.size(); ++i) {
     Fields f(procedural[i], "procedural[" + std::to_string(i) + "]", file, folder);
     manifest.procedural.push_back(parseProcedural(f));
@@ -449,14 +346,14 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     }
   }
 
-  const json& ict = arrayField(top, "ict_facekit");
+  const json& ict = top.optionalArray("ict_facekit");
   for (std::size_t i = 0; i < ict.size(); ++i) {
     Fields f(ict[i], "ict_facekit[" + std::to_string(i) + "]", file, folder);
     manifest.ict.push_back(parseIct(f));
     f.rejectUnknown();
   }
 
-  const json& ictTextured = arrayField(top, "ict_textured");
+  const json& ictTextured = top.optionalArray("ict_textured");
   for (std::size_t i = 0; i < ictTextured.size(); ++i) {
     Fields f(ictTextured[i], "ict_textured[" + std::to_string(i) + "]", file, folder);
     manifest.ictTextured.push_back(parseIctTextured(f, manifest.scans));
@@ -472,7 +369,7 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
     manifest.augmentation = parseAugmentation(f);
     f.rejectUnknown();
   }
-  const json& makehuman = arrayField(top, "makehuman");
+  const json& makehuman = top.optionalArray("makehuman");
   for (std::size_t i = 0; i < makehuman.size(); ++i) {
     Fields f(makehuman[i], "makehuman[" + std::to_string(i) + "]", file, folder);
     manifest.makehuman.push_back(parseMakeHuman(f));
@@ -489,7 +386,7 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
       }
     }
   }
-  const json& photos = arrayField(top, "photos");
+  const json& photos = top.optionalArray("photos");
   for (std::size_t i = 0; i < photos.size(); ++i) {
     Fields f(photos[i], "photos[" + std::to_string(i) + "]", file, folder);
     manifest.photos.push_back(parsePhotos(f));

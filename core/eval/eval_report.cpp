@@ -1,5 +1,6 @@
 #include "core/eval/eval_report.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -7,6 +8,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/scheme/text_scan.hpp"
 
 namespace clm3d {
 namespace {
@@ -17,16 +19,10 @@ json number(double value) {
   return std::isfinite(value) ? json(value) : json(nullptr);
 }
 
+json regionsJson(const ErrorSummary& s);
+
 json sequenceJson(const SequenceEvaluation& sequence) {
   const auto& s = sequence.summary;
-  json regions = json::array();
-  for (const auto& region : s.regions) {
-    regions.push_back({{"name", region.name},
-                       {"points", region.points},
-                       {"mean", number(region.mean)},
-                       {"sd", number(region.sd)},
-                       {"within_threshold", number(region.withinThreshold)}});
-  }
   json cdf = json::array();
   for (const auto& sample : s.cdf) {
     cdf.push_back({{"threshold", sample.threshold},
@@ -41,10 +37,12 @@ json sequenceJson(const SequenceEvaluation& sequence) {
                         {"success", frame.success},
                         {"converged", frame.converged},
                         {"error", number(frame.error)},
-                        {"jitter", number(frame.jitter)}});
+                        {"jitter", number(frame.jitter)},
+                        {"sequence", frame.sequence}});
   }
   return {{"label", sequence.label},
           {"file", sequence.source},
+          {"files", sequence.sources},
           {"frames",
            {{"truth", s.truthFrames},
             {"normalised", s.normalisedFrames},
@@ -69,9 +67,51 @@ json sequenceJson(const SequenceEvaluation& sequence) {
            {{"jitter", number(s.jitter)},
             {"jitter_frames", s.jitterFrames},
             {"lag_frames", number(s.lagFrames)}}},
-          {"regions", regions},
+          {"regions", regionsJson(s)},
           {"cdf", cdf},
           {"per_frame", perFrame}};
+}
+
+json regionsJson(const ErrorSummary& s) {
+  json regions = json::array();
+  for (const auto& region : s.regions) {
+    regions.push_back({{"name", region.name},
+                       {"points", region.points},
+                       {"mean", number(region.mean)},
+                       {"sd", number(region.sd)},
+                       {"within_threshold", number(region.withinThreshold)}});
+  }
+  return regions;
+}
+
+json bucketsJson(const EvaluationReport& report) {
+  if (!report.buckets) return nullptr;
+  const BucketedErrors& b = *report.buckets;
+  json predictions = json::array();
+  for (std::size_t p = 0; p < b.buckets.size(); ++p) {
+    json buckets = json::array();
+    for (const auto& bucket : b.buckets[p]) {
+      const ErrorSummary& s = bucket.summary;
+      buckets.push_back({{"low", bucket.low},
+                         {"high", bucket.high},
+                         {"frames", s.normalisedFrames},
+                         {"scored", s.scoredFrames},
+                         {"converged", s.convergedFrames},
+                         {"mean", number(s.mean)},
+                         {"median", number(s.median)},
+                         {"convergence_rate", number(s.convergenceRate)},
+                         {"points_within_threshold", number(s.withinThreshold)},
+                         {"mean_point_error", number(s.meanPointError)},
+                         {"regions", regionsJson(s)}});
+    }
+    predictions.push_back({{"label", report.sequences.at(p).label},
+                           {"outside", b.outside.at(p)},
+                           {"buckets", buckets}});
+  }
+  return {{"column", b.column},
+          {"absolute", b.absolute},
+          {"edges", b.edges},
+          {"predictions", predictions}};
 }
 
 json comparisonJson(const EvaluationReport& report) {
@@ -171,42 +211,102 @@ Comparison compareSequences(const std::vector<SequenceEvaluation>& sequences) {
   return result;
 }
 
+std::vector<TrackerFiles> groupPredictions(std::size_t truthCount,
+                                           const std::vector<std::filesystem::path>& predictions,
+                                           const std::vector<std::string>& labels) {
+  if (truthCount == 0) throw InputError("evaluation: no ground-truth file given");
+  if (predictions.empty()) throw InputError("evaluation: no prediction file given");
+  if (predictions.size() % truthCount != 0) {
+    throw InputError("evaluation: " + std::to_string(predictions.size()) +
+                     " prediction files for " + std::to_string(truthCount) +
+                     " ground-truth files; give each tracker one prediction per ground truth, in "
+                     "the same order");
+  }
+  const std::size_t trackers = predictions.size() / truthCount;
+  if (!labels.empty() && labels.size() != trackers) {
+    throw InputError("evaluation: " + std::to_string(labels.size()) + " labels for " +
+                     std::to_string(trackers) + " prediction" + (trackers == 1 ? "" : "s") +
+                     (truthCount > 1
+                          ? " (trackers of " + std::to_string(truthCount) + " sequences each)"
+                          : std::string()));
+  }
+  std::vector<TrackerFiles> result(trackers);
+  for (std::size_t t = 0; t < trackers; ++t) {
+    result[t].label = labels.empty() ? std::string() : labels[t];
+    result[t].predictions.assign(
+        predictions.begin() + static_cast<std::ptrdiff_t>(t * truthCount),
+        predictions.begin() + static_cast<std::ptrdiff_t>((t + 1) * truthCount));
+  }
+  return result;
+}
+
+EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& truths,
+                                    const std::vector<TrackerFiles>& trackers, const Scheme& scheme,
+                                    const EvalOptions& options, const BucketSpec* buckets) {
+  if (truths.empty()) throw InputError("evaluation: no ground-truth file given");
+  if (trackers.empty()) throw InputError("evaluation: no prediction file given");
+  EvalOptions effective = options;
+  if (buckets != nullptr) {
+    effective.keyColumn = buckets->column;
+    effective.keyAbsolute = buckets->absolute;
+  }
+  EvaluationReport report;
+  report.schemeName = scheme.name();
+  report.options = effective;
+  std::vector<TrackTable> truthTables;
+  for (const auto& truth : truths) {
+    truthTables.push_back(readTrackTable(truth));
+    report.truthSources.push_back(truth.string());
+    report.truthSource += (report.truthSource.empty() ? "" : ", ") + truth.string();
+  }
+  for (const auto& tracker : trackers) {
+    if (tracker.predictions.size() != truths.size()) {
+      throw InputError("evaluation: " + std::to_string(tracker.predictions.size()) +
+                       " prediction files for " + std::to_string(truths.size()) +
+                       " ground-truth files");
+    }
+    std::vector<TrackTable> tables;
+    tables.reserve(truths.size());
+    std::vector<TrackPair> pairs;
+    for (std::size_t i = 0; i < truths.size(); ++i) {
+      tables.push_back(readTrackTable(tracker.predictions[i]));
+    }
+    for (std::size_t i = 0; i < truths.size(); ++i) {
+      pairs.push_back(
+          {&truthTables[i], &tables[i], truths[i].string(), tracker.predictions[i].string()});
+    }
+    auto sequence = evaluateSequences(pairs, scheme, effective);
+    sequence.label =
+        tracker.label.empty() ? tracker.predictions.front().stem().string() : tracker.label;
+    report.sequences.push_back(std::move(sequence));
+  }
+  report.comparison = compareSequences(report.sequences);
+  if (buckets != nullptr) {
+    report.buckets = bucketErrors(report.sequences, *buckets, scheme, effective);
+  }
+  return report;
+}
+
 EvaluationReport evaluateTrackFiles(const std::filesystem::path& truth,
                                     const std::vector<std::filesystem::path>& predictions,
                                     const std::vector<std::string>& labels, const Scheme& scheme,
                                     const EvalOptions& options) {
-  if (predictions.empty()) throw InputError("evaluation: no prediction file given");
-  if (!labels.empty() && labels.size() != predictions.size()) {
-    throw InputError("evaluation: " + std::to_string(labels.size()) + " labels for " +
-                     std::to_string(predictions.size()) + " prediction files");
-  }
-  EvaluationReport report;
-  report.schemeName = scheme.name();
-  report.truthSource = truth.string();
-  report.options = options;
-  const TrackTable truthTable = readTrackTable(truth);
-  for (std::size_t i = 0; i < predictions.size(); ++i) {
-    const TrackTable table = readTrackTable(predictions[i]);
-    auto sequence = evaluateSequence(truthTable, table, scheme, options, truth.string(),
-                                     predictions[i].string());
-    sequence.label = labels.empty() ? predictions[i].stem().string() : labels[i];
-    report.sequences.push_back(std::move(sequence));
-  }
-  report.comparison = compareSequences(report.sequences);
-  return report;
+  return evaluateTrackFiles({truth}, groupPredictions(1, predictions, labels), scheme, options);
 }
 
 std::string formatReportJson(const EvaluationReport& report) {
   json predictions = json::array();
   for (const auto& sequence : report.sequences) predictions.push_back(sequenceJson(sequence));
-  const json document = {{"format", "clm3d-evaluation"},
-                         {"version", 1},
-                         {"scheme", report.schemeName},
-                         {"truth", report.truthSource},
-                         {"metric", "thesis eq. 5.1: point distance / true inter-ocular distance"},
-                         {"threshold", report.options.threshold},
-                         {"predictions", predictions},
-                         {"comparison", comparisonJson(report)}};
+  json document = {{"format", "clm3d-evaluation"},
+                   {"version", 1},
+                   {"scheme", report.schemeName},
+                   {"truth", report.truthSource},
+                   {"metric", "thesis eq. 5.1: point distance / true inter-ocular distance"},
+                   {"threshold", report.options.threshold},
+                   {"truths", report.truthSources},
+                   {"predictions", predictions},
+                   {"comparison", comparisonJson(report)}};
+  if (report.buckets) document["buckets"] = bucketsJson(report);
   return document.dump(2) + "\n";
 }
 
@@ -217,9 +317,11 @@ void writeReportJson(const std::filesystem::path& path, const EvaluationReport& 
 std::string formatReportText(const EvaluationReport& report) {
   std::string out;
   const int truthFrames = report.sequences.empty() ? 0 : report.sequences[0].summary.truthFrames;
-  out += "ground truth: " + report.truthSource + " (" + std::to_string(truthFrames) +
-         " frames, scheme " + report.schemeName + ", error = point distance / inter-ocular " +
-         "distance, threshold " + fixed(report.options.threshold, 2) + ")\n";
+  const std::size_t truths = report.truthSources.size();
+  out += "ground truth: " + report.truthSource + " (" + std::to_string(truthFrames) + " frames" +
+         (truths > 1 ? " in " + std::to_string(truths) + " sequences, pooled" : "") + ", scheme " +
+         report.schemeName + ", error = point distance / inter-ocular " + "distance, threshold " +
+         fixed(report.options.threshold, 2) + ")\n";
   for (const auto& sequence : report.sequences) {
     const auto& s = sequence.summary;
     out += "\n" + sequence.label + " (" + sequence.source + ")\n";
@@ -251,7 +353,108 @@ std::string formatReportText(const EvaluationReport& report) {
   }
   const std::string comparison = formatComparison(report);
   if (!comparison.empty()) out += "\n" + comparison + "\n";
+  if (report.buckets) out += "\n" + formatBucketsText(report);
   return out;
+}
+
+std::string formatBucketsText(const EvaluationReport& report) {
+  if (!report.buckets) return {};
+  const BucketedErrors& b = *report.buckets;
+  const std::string title = bucketColumnTitle(b);
+  std::string cellTitle;  // in a Markdown cell, "|" is escaped
+  for (const char c : title) cellTitle += c == '|' ? std::string("\\|") : std::string(1, c);
+  const auto range = [](const ErrorBucket& bucket) {
+    return text::formatNumber(bucket.low) + " to " + text::formatNumber(bucket.high);
+  };
+  std::string out = "errors by " + title + " of the ground truth (frames in brackets):\n\n";
+  out += "| prediction | figure |";
+  std::string rule = "|---|---|";
+  if (!b.buckets.empty()) {
+    for (const auto& bucket : b.buckets.front()) {
+      out += " " + range(bucket) + " |";
+      rule += "---|";
+    }
+  }
+  out += " outside |\n" + rule + "---|\n";
+  const std::string within = "points within " + fixed(report.options.threshold, 2);
+  for (std::size_t p = 0; p < b.buckets.size(); ++p) {
+    const std::string& label = report.sequences.at(p).label;
+    const auto row = [&](const std::string& figure, const auto& cell, bool withCount) {
+      out += "| " + label + " | " + figure + " |";
+      for (const auto& bucket : b.buckets[p]) {
+        const ErrorSummary& s = bucket.summary;
+        out +=
+            " " + (s.normalisedFrames == 0 ? std::string("-") : cell(s)) +
+            (withCount && s.normalisedFrames > 0 ? " (" + std::to_string(s.normalisedFrames) + ")"
+                                                 : std::string()) +
+            " |";
+      }
+      out += " " + std::to_string(b.outside.at(p)) + " |\n";
+    };
+    row(
+        "mean error", [](const ErrorSummary& s) { return formatErrorValue(s.mean); }, false);
+    row(
+        "median error", [](const ErrorSummary& s) { return formatErrorValue(s.median); }, false);
+    row(
+        "converged", [](const ErrorSummary& s) { return formatShare(s.convergenceRate); }, true);
+    row(
+        within, [](const ErrorSummary& s) { return formatShare(s.withinThreshold); }, false);
+  }
+  // Regions per bucket (thesis figure 5.13 per range of the column).
+  out += "\nmean point error per region and " + title + ":\n\n| prediction | " + cellTitle +
+         " | frames |";
+  rule = "|---|---|---|";
+  const auto& regions = report.sequences.empty() || report.sequences[0].summary.regions.empty()
+                            ? std::vector<RegionError>{}
+                            : report.sequences[0].summary.regions;
+  for (const auto& region : regions) {
+    out += " " + region.name + " |";
+    rule += "---|";
+  }
+  out += " all points |\n" + rule + "---|\n";
+  for (std::size_t p = 0; p < b.buckets.size(); ++p) {
+    for (const auto& bucket : b.buckets[p]) {
+      const ErrorSummary& s = bucket.summary;
+      if (s.scoredFrames == 0) continue;
+      out += "| " + report.sequences[p].label + " | " + range(bucket) + " | " +
+             std::to_string(s.scoredFrames) + " |";
+      for (const auto& region : s.regions) out += " " + formatErrorValue(region.mean) + " |";
+      out += " " + formatErrorValue(s.meanPointError) + " |\n";
+    }
+  }
+  return out;
+}
+
+std::string formatBucketsCsv(const EvaluationReport& report) {
+  if (!report.buckets) return {};
+  const BucketedErrors& b = *report.buckets;
+  std::string out =
+      "label,low,high,frames,scored,converged,error_mean,error_median,convergence,"
+      "within_threshold,mean_point_error";
+  if (!report.sequences.empty()) {
+    for (const auto& region : report.sequences[0].summary.regions) out += "," + region.name;
+  }
+  out += "\n";
+  const auto cell = [](double v) { return std::isfinite(v) ? fixed(v, 6) : std::string(); };
+  for (std::size_t p = 0; p < b.buckets.size(); ++p) {
+    std::string label = report.sequences.at(p).label;
+    std::replace_if(
+        label.begin(), label.end(), [](char c) { return c == ',' || c == '"' || c == '\n'; }, ' ');
+    for (const auto& bucket : b.buckets[p]) {
+      const ErrorSummary& s = bucket.summary;
+      out += label + "," + text::formatNumber(bucket.low) + "," + text::formatNumber(bucket.high) +
+             "," + std::to_string(s.normalisedFrames) + "," + std::to_string(s.scoredFrames) + "," +
+             std::to_string(s.convergedFrames) + "," + cell(s.mean) + "," + cell(s.median) + "," +
+             cell(s.convergenceRate) + "," + cell(s.withinThreshold) + "," + cell(s.meanPointError);
+      for (const auto& region : s.regions) out += "," + cell(region.mean);
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+void writeBucketsCsv(const std::filesystem::path& path, const EvaluationReport& report) {
+  writeTextAtomically(path, formatBucketsCsv(report));
 }
 
 }  // namespace clm3d

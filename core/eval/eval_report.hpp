@@ -5,9 +5,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/eval/error_buckets.hpp"
 #include "core/eval/landmark_error.hpp"
 #include "core/eval/statistics.hpp"
 #include "core/scheme/scheme.hpp"
@@ -25,11 +27,26 @@ struct Comparison {
 
 struct EvaluationReport {
   std::string schemeName;
-  std::string truthSource;
+  std::string truthSource;                // the truth files joined by ", "
+  std::vector<std::string> truthSources;  // one per sequence
   EvalOptions options;
-  std::vector<SequenceEvaluation> sequences;
+  std::vector<SequenceEvaluation> sequences;  // one per prediction (tracker)
   Comparison comparison;
+  std::optional<BucketedErrors> buckets;  // when asked for
 };
+
+// One tracker's predictions of several sequences: predictions[i] is its output for truth i.
+struct TrackerFiles {
+  std::string label;  // empty: the first prediction's file name without extension
+  std::vector<std::filesystem::path> predictions;
+};
+
+// Groups `--pred` files by tracker for `truthCount` sequences: the first truthCount predictions
+// are the first tracker's (in truth order), the next ones the second's, and so on. labels: empty or
+// one per tracker. Throws InputError when the counts do not divide or match, saying what was given.
+std::vector<TrackerFiles> groupPredictions(std::size_t truthCount,
+                                           const std::vector<std::filesystem::path>& predictions,
+                                           const std::vector<std::string>& labels);
 
 // Two sequences: Welch's t-test; three or more: one-way ANOVA; over scoredFrameErrors(). When the
 // data cannot be tested (too few frames, no spread) the kind is None and note says why.
@@ -43,11 +60,23 @@ EvaluationReport evaluateTrackFiles(const std::filesystem::path& truth,
                                     const std::vector<std::string>& labels, const Scheme& scheme,
                                     const EvalOptions& options = {});
 
+// Several sequences pooled per tracker (evaluateSequences): reads every truth once and each
+// tracker's predictions, evaluates and compares the trackers, and with buckets (non-null) breaks
+// the errors down by that truth column (its column and absolute flag override options.keyColumn
+// and keyAbsolute). InputError names the file at fault.
+EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& truths,
+                                    const std::vector<TrackerFiles>& trackers, const Scheme& scheme,
+                                    const EvalOptions& options = {},
+                                    const BucketSpec* buckets = nullptr);
+
 // {"format": "clm3d-evaluation", "version": 1, "scheme", "truth", "threshold", "predictions": [
 // {"label", "file", "frames": {...}, "error": {mean, median, sd, min, max}, "convergence_rate",
 // "points_within_threshold", "mean_point_error", "motion": {"jitter", "jitter_frames",
 // "lag_frames"}, "regions": [...], "cdf": [...], "per_frame": [{"frame", "error", "success",
-// "converged", "jitter"}]}], "comparison": {...} or null}. NaN is null.
+// "converged", "jitter", "sequence"}]}], "comparison": {...} or null, "truths": [...], and with
+// buckets "buckets": {"column", "absolute", "edges", "predictions": [{"label", "outside",
+// "buckets": [{"low", "high", "frames", "scored", "mean", "median", "convergence_rate",
+// "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too. NaN is null.
 std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
@@ -64,7 +93,16 @@ std::string formatPValue(double p);
 std::string formatComparison(const EvaluationReport& report);
 
 // A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
-// threshold, per-region means, jitter and lag; then the test.
+// threshold, per-region means, jitter and lag; then the test; then the buckets' tables.
 std::string formatReportText(const EvaluationReport& report);
+
+// The buckets as Markdown tables (docs/evaluation.md): per tracker the mean and median error,
+// convergence and points within the threshold (frames in brackets) per bucket, then the regions'
+// mean point error per tracker and bucket.
+std::string formatBucketsText(const EvaluationReport& report);
+// The same figures as CSV, one row per tracker and bucket: label,low,high,frames,scored,
+// error_mean,error_median,convergence,within_threshold, then one column per region. Atomic.
+std::string formatBucketsCsv(const EvaluationReport& report);
+void writeBucketsCsv(const std::filesystem::path& path, const EvaluationReport& report);
 
 }  // namespace clm3d

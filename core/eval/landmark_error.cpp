@@ -24,6 +24,9 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
   FrameError result;
   result.frame = truth.frame;
   result.pointErrors.assign(static_cast<std::size_t>(n), kNan);
+  result.truePoints.assign(static_cast<std::size_t>(n), false);
+  for (int i = 0; i < n; ++i)
+    result.truePoints[static_cast<std::size_t>(i)] = hasPoint(truth.points, i);
   result.error = kNan;
   const auto [first, second] = scheme.normalisationPair();
   if (hasPoint(truth.points, first) && hasPoint(truth.points, second)) {
@@ -48,19 +51,25 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
   return result;
 }
 
+// What the jitter and lag of a summary are made of, summed so that sequences pool.
+struct MotionSums {
+  double jitterSum = 0.0;
+  int jitterFrames = 0;
+  double alongMotion = 0.0;  // sum of (p_t - g_t) . (g_t - g_t-1)
+  double motionSquared = 0.0;
+};
+
 // Jitter of every frame whose previous frame is in the truth too and succeeded in both, and the
-// summary's jitter and lag (landmark_error.hpp). truth: rows in frame order, matching `frames`.
+// sums behind the summary's jitter and lag (landmark_error.hpp). truth: rows in frame order,
+// matching `frames`.
 void measureMotion(const TrackTable& truth,
-                   const std::unordered_map<int, const TrackRow*>& predictionOf,
-                   std::vector<FrameError>& frames, ErrorSummary& summary) {
+                   const std::unordered_map<int, const TrackRow*>& predictionOf, FrameError* frames,
+                   MotionSums& sums) {
   const auto succeeded = [&](int frame) -> const TrackRow* {
     const auto it = predictionOf.find(frame);
     return it != predictionOf.end() && it->second->success ? it->second : nullptr;
   };
-  double jitterSum = 0.0;
-  double alongMotion = 0.0;  // sum of (p_t - g_t) . (g_t - g_t-1)
-  double motionSquared = 0.0;
-  for (std::size_t f = 1; f < frames.size(); ++f) {
+  for (std::size_t f = 1; f < truth.rows.size(); ++f) {
     const TrackRow& now = truth.rows[f];
     const TrackRow& before = truth.rows[f - 1];
     FrameError& frame = frames[f];
@@ -78,21 +87,21 @@ void measureMotion(const TrackTable& truth,
       const Eigen::Vector2d truthMotion = now.points.col(i) - before.points.col(i);
       const Eigen::Vector2d motion = predicted->points.col(i) - previous->points.col(i);
       sum += (motion - truthMotion).norm() / frame.interOcular;
-      alongMotion += (predicted->points.col(i) - now.points.col(i)).dot(truthMotion);
-      motionSquared += truthMotion.squaredNorm();
+      sums.alongMotion += (predicted->points.col(i) - now.points.col(i)).dot(truthMotion);
+      sums.motionSquared += truthMotion.squaredNorm();
       ++count;
     }
     if (count == 0) continue;
     frame.jitter = sum / count;
-    jitterSum += frame.jitter;
-    ++summary.jitterFrames;
+    sums.jitterSum += frame.jitter;
+    ++sums.jitterFrames;
   }
-  if (summary.jitterFrames > 0) summary.jitter = jitterSum / summary.jitterFrames;
-  if (motionSquared > 1e-12) summary.lagFrames = -alongMotion / motionSquared;
 }
 
-ErrorSummary summarise(const std::vector<FrameError>& frames, const TrackTable& truth,
-                       const Scheme& scheme, const EvalOptions& options) {
+}  // namespace
+
+ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme& scheme,
+                             const EvalOptions& options) {
   ErrorSummary s;
   s.truthFrames = static_cast<int>(frames.size());
   std::vector<double> frameErrors;
@@ -102,8 +111,7 @@ ErrorSummary summarise(const std::vector<FrameError>& frames, const TrackTable& 
   std::vector<int> regionTrue(regions.size(), 0);
   std::vector<int> regionFound(regions.size(), 0);
 
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    const auto& frame = frames[f];
+  for (const auto& frame : frames) {
     if (!frame.normalised) continue;
     ++s.normalisedFrames;
     s.predictedFrames += frame.predicted ? 1 : 0;
@@ -113,9 +121,8 @@ ErrorSummary summarise(const std::vector<FrameError>& frames, const TrackTable& 
       ++s.scoredFrames;
       frameErrors.push_back(frame.error);
     }
-    const auto& truthPoints = truth.rows[f].points;
     for (int i = 0; i < static_cast<int>(frame.pointErrors.size()); ++i) {
-      if (!hasPoint(truthPoints, i)) continue;
+      if (!frame.truePoints[static_cast<std::size_t>(i)]) continue;
       const int region = scheme.regionOf(i);
       ++s.truePoints;
       if (region >= 0) ++regionTrue[static_cast<std::size_t>(region)];
@@ -176,12 +183,15 @@ ErrorSummary summarise(const std::vector<FrameError>& frames, const TrackTable& 
   return s;
 }
 
-}  // namespace
+namespace {
 
-SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& prediction,
-                                    const Scheme& scheme, const EvalOptions& options,
-                                    const std::string& truthName,
-                                    const std::string& predictionName) {
+// The frames of one pair (appended to `frames`, tagged with `sequence`), its motion sums and how
+// many prediction rows match no truth frame. Checks as evaluateSequence documents.
+int evaluatePair(const TrackPair& pair, int sequence, const Scheme& scheme,
+                 const EvalOptions& options, std::vector<FrameError>& frames, MotionSums& motion) {
+  const TrackTable& truth = *pair.truth;
+  const TrackTable& prediction = *pair.prediction;
+  const std::string& truthName = pair.truthName;
   if (truth.landmarkCount != scheme.size()) {
     throwInputError(truthName, "has " + std::to_string(truth.landmarkCount) +
                                    " landmarks (x_1..x_" + std::to_string(truth.landmarkCount) +
@@ -189,12 +199,18 @@ SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& p
                                    std::to_string(scheme.size()));
   }
   if (prediction.landmarkCount != truth.landmarkCount) {
-    throwInputError(predictionName, "has " + std::to_string(prediction.landmarkCount) +
-                                        " landmarks but the ground truth " + truthName + " has " +
-                                        std::to_string(truth.landmarkCount));
+    throwInputError(pair.predictionName, "has " + std::to_string(prediction.landmarkCount) +
+                                             " landmarks but the ground truth " + truthName +
+                                             " has " + std::to_string(truth.landmarkCount));
   }
-  if (!(options.threshold > 0.0)) throw InputError("evaluation threshold must be positive");
   if (truth.rows.empty()) throwInputError(truthName, "has no frames");
+  if (!options.keyColumn.empty() &&
+      !trackColumnValue(truth, truth.rows.front(), options.keyColumn)) {
+    std::string known;
+    for (const auto& name : numericTrackColumns(truth)) known += (known.empty() ? "" : ", ") + name;
+    throwInputError(truthName, "has no column \"" + options.keyColumn +
+                                   "\" (its columns: " + known + ", x_k, y_k)");
+  }
 
   std::unordered_map<int, const TrackRow*> predictionOf;
   for (const auto& row : prediction.rows) predictionOf.emplace(row.frame, &row);
@@ -204,27 +220,77 @@ SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& p
   std::stable_sort(sortedTruth.rows.begin(), sortedTruth.rows.end(),
                    [](const TrackRow& a, const TrackRow& b) { return a.frame < b.frame; });
 
-  SequenceEvaluation result;
-  result.label = predictionName;
-  result.source = predictionName;
+  const std::size_t first = frames.size();
   int matched = 0;
+  int normalised = 0;
   for (const auto& row : sortedTruth.rows) {
     const auto it = predictionOf.find(row.frame);
     const TrackRow* predicted = it == predictionOf.end() ? nullptr : it->second;
     matched += predicted != nullptr ? 1 : 0;
-    result.frames.push_back(frameError(row, predicted, scheme, options));
+    FrameError frame = frameError(row, predicted, scheme, options);
+    frame.sequence = sequence;
+    if (!options.keyColumn.empty()) {
+      const double key = trackColumnValue(sortedTruth, row, options.keyColumn).value_or(kNan);
+      frame.key = options.keyAbsolute ? std::abs(key) : key;
+    }
+    normalised += frame.normalised ? 1 : 0;
+    frames.push_back(std::move(frame));
   }
-  result.summary = summarise(result.frames, sortedTruth, scheme, options);
-  measureMotion(sortedTruth, predictionOf, result.frames, result.summary);
-  result.summary.extraPredictionRows = static_cast<int>(prediction.rows.size()) - matched;
-  if (result.summary.normalisedFrames == 0) {
-    const auto [first, second] = scheme.normalisationPair();
-    throwInputError(truthName, "no frame has both normalisation points " + scheme.id(first) + " (" +
-                                   std::to_string(first + 1) + ") and " + scheme.id(second) + " (" +
-                                   std::to_string(second + 1) +
+  measureMotion(sortedTruth, predictionOf, frames.data() + first, motion);
+  if (normalised == 0) {
+    const auto [a, b] = scheme.normalisationPair();
+    throwInputError(truthName, "no frame has both normalisation points " + scheme.id(a) + " (" +
+                                   std::to_string(a + 1) + ") and " + scheme.id(b) + " (" +
+                                   std::to_string(b + 1) +
                                    ") apart, so no error can be normalised");
   }
+  return static_cast<int>(prediction.rows.size()) - matched;
+}
+
+}  // namespace
+
+SequenceEvaluation evaluateSequences(const std::vector<TrackPair>& pairs, const Scheme& scheme,
+                                     const EvalOptions& options) {
+  if (pairs.empty()) throw InputError("evaluation: no truth/prediction pair given");
+  if (!(options.threshold > 0.0)) throw InputError("evaluation threshold must be positive");
+  SequenceEvaluation result;
+  MotionSums motion;
+  int extraRows = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const TrackPair& pair = pairs[k];
+    const int extra =
+        evaluatePair(pair, static_cast<int>(k), scheme, options, result.frames, motion);
+    if (extra > 0 && pairs.size() > 1) {
+      throwInputError(pair.predictionName,
+                      std::to_string(extra) + " of its " +
+                          std::to_string(pair.prediction->rows.size()) +
+                          " rows are for frames its ground truth " + pair.truthName + " (" +
+                          std::to_string(pair.truth->rows.size()) +
+                          " frames) does not have: is it the prediction of another sequence?");
+    }
+    extraRows += extra;
+    result.source += (k == 0 ? "" : ", ") + pair.predictionName;
+    result.sources.push_back(pair.predictionName);
+  }
+  result.label = result.source;
+  result.summary = summariseFrames(result.frames, scheme, options);
+  result.summary.extraPredictionRows = extraRows;
+  if (motion.jitterFrames > 0) {
+    result.summary.jitterFrames = motion.jitterFrames;
+    result.summary.jitter = motion.jitterSum / motion.jitterFrames;
+  }
+  if (motion.motionSquared > 1e-12) {
+    result.summary.lagFrames = -motion.alongMotion / motion.motionSquared;
+  }
   return result;
+}
+
+SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& prediction,
+                                    const Scheme& scheme, const EvalOptions& options,
+                                    const std::string& truthName,
+                                    const std::string& predictionName) {
+  return evaluateSequences({TrackPair{&truth, &prediction, truthName, predictionName}}, scheme,
+                           options);
 }
 
 std::vector<double> scoredFrameErrors(const SequenceEvaluation& evaluation) {

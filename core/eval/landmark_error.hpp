@@ -22,11 +22,17 @@ struct EvalOptions {
   // The cumulative distributions are sampled at 0, cdfStep, ..., cdfMax.
   double cdfMax = 0.5;
   double cdfStep = 0.01;
+  // When set, each frame's FrameError::key is this column of its ground-truth row
+  // (trackColumnValue: e.g. "yaw"), or its absolute value with keyAbsolute, for bucketing
+  // (error_buckets.hpp). A truth without the column is an InputError naming the file.
+  std::string keyColumn;
+  bool keyAbsolute = false;
 };
 
 // One ground-truth frame.
 struct FrameError {
   int frame = 0;
+  int sequence = 0;          // which truth/prediction pair of a pooled evaluation (0-based)
   bool normalised = false;   // the truth has both normalisation points, apart (else not scored)
   bool predicted = false;    // the prediction has a row for this frame
   bool success = false;      // ... and that row says success
@@ -36,6 +42,10 @@ struct FrameError {
   double error = 0.0;
   // Per landmark, NaN where the truth or the prediction lacks the point.
   std::vector<double> pointErrors;
+  // Per landmark, whether the truth has the point (the denominators of the shares).
+  std::vector<bool> truePoints;
+  // The truth's EvalOptions::keyColumn value in this frame; NaN without one.
+  double key = std::numeric_limits<double>::quiet_NaN();
   // Motion of the prediction since the previous frame not explained by the truth's: the mean
   // over points of |(p_t - p_t-1) - (g_t - g_t-1)| / interOcular. NaN unless the truth has the
   // previous frame (frame - 1) and the prediction succeeded in both.
@@ -84,9 +94,10 @@ struct ErrorSummary {
 };
 
 struct SequenceEvaluation {
-  std::string label;               // a name for reports and legends
-  std::string source;              // where the prediction came from (its file), for reports
-  std::vector<FrameError> frames;  // one per truth row, in frame order
+  std::string label;                 // a name for reports and legends
+  std::string source;                // where the prediction came from (its files), for reports
+  std::vector<std::string> sources;  // the prediction of each pooled sequence, in pair order
+  std::vector<FrameError> frames;    // one per truth row, in frame order
   ErrorSummary summary;
 };
 
@@ -97,6 +108,29 @@ SequenceEvaluation evaluateSequence(const TrackTable& truth, const TrackTable& p
                                     const Scheme& scheme, const EvalOptions& options = {},
                                     const std::string& truthName = "ground truth",
                                     const std::string& predictionName = "prediction");
+
+// One ground truth and a prediction of the same sequence, with names for messages and reports.
+// The tables must outlive the call they are passed to.
+struct TrackPair {
+  const TrackTable* truth = nullptr;
+  const TrackTable* prediction = nullptr;
+  std::string truthName = "ground truth";
+  std::string predictionName = "prediction";
+};
+
+// One tracker over several sequences, pooled: every pair is evaluated as evaluateSequence does
+// (same checks, each naming its file), the frames are concatenated in pair order (FrameError::
+// sequence says which pair) and summarised together; jitter and lag pool the frame pairs of every
+// sequence (never across two). With more than one pair, a prediction with rows for frames its
+// truth lacks is an InputError naming both files (the pairs are likely mixed up). source lists
+// the prediction names joined by ", ".
+SequenceEvaluation evaluateSequences(const std::vector<TrackPair>& pairs, const Scheme& scheme,
+                                     const EvalOptions& options = {});
+
+// The summary of any subset of an evaluation's frames (e.g. a bucket): every figure but the
+// motion ones (jitter and lag stay NaN, extraPredictionRows 0).
+ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme& scheme,
+                             const EvalOptions& options = {});
 
 // The errors of the scored frames, in frame order (the sample the statistics compare).
 std::vector<double> scoredFrameErrors(const SequenceEvaluation& evaluation);

@@ -12,6 +12,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 
 namespace clm3d {
 
@@ -182,57 +183,24 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
   throw Error("field " + field + ": " + what);
 }
 
-const json& member(const json& object, const char* key, const std::string& field) {
-  if (!object.is_object()) fieldError(field, "not an object");
-  const auto it = object.find(key);
-  if (it == object.end()) fieldError(field + "." + key, "missing");
-  return *it;
-}
+// The header's members are read with core/common/json_fields (no file name: parseModel adds it);
+// any member the reader does not know is refused.
+using Header = JsonValue;
 
-std::int64_t integer(const json& object, const char* key, const std::string& field,
-                     std::int64_t min, std::int64_t max) {
-  const json& value = member(object, key, field);
-  const std::string name = field + "." + key;
-  if (!value.is_number_integer()) fieldError(name, "not an integer");
-  if (value.is_number_unsigned()) {
-    const auto u = value.get<std::uint64_t>();
-    if (u > static_cast<std::uint64_t>(max)) fieldError(name, "out of range");
-    return static_cast<std::int64_t>(u);
-  }
-  const auto v = value.get<std::int64_t>();
-  if (v < min || v > max) fieldError(name, "out of range");
-  return v;
+const Header& array(JsonFields& object, const char* key, std::size_t maxSize) {
+  const Header& value = object.array(key);
+  if (value.size() > maxSize) fieldError(object.name(key), "too many entries");
+  return value;
 }
 
 // The units of a scale's experts: 1 before version 3, which gives them as "expertUnits".
-std::int64_t expertUnits(const json& scale, const std::string& field, std::uint32_t version) {
-  return version >= 3 ? integer(scale, "expertUnits", field, 1, kMaxExpertUnits) : 1;
+std::int64_t expertUnits(JsonFields& scale, std::uint32_t version) {
+  return version >= 3 ? scale.integer("expertUnits", 1, kMaxExpertUnits) : 1;
 }
 
-double number(const json& object, const char* key, const std::string& field) {
-  const json& value = member(object, key, field);
-  if (!value.is_number()) fieldError(field + "." + key, "not a number");
-  return value.get<double>();
-}
-
-bool boolean(const json& object, const char* key, const std::string& field) {
-  const json& value = member(object, key, field);
-  if (!value.is_boolean()) fieldError(field + "." + key, "not true or false");
-  return value.get<bool>();
-}
-
-std::string text(const json& object, const char* key, const std::string& field) {
-  const json& value = member(object, key, field);
-  if (!value.is_string()) fieldError(field + "." + key, "not a string");
-  return value.get<std::string>();
-}
-
-const json& array(const json& object, const char* key, const std::string& field,
-                  std::size_t maxSize) {
-  const json& value = member(object, key, field);
-  if (!value.is_array()) fieldError(field + "." + key, "not an array");
-  if (value.size() > maxSize) fieldError(field + "." + key, "too many entries");
-  return value;
+double number(JsonFields& object, const char* key) {
+  return object.number(key, std::numeric_limits<double>::lowest(),
+                       std::numeric_limits<double>::max());
 }
 
 // Adds count values to the running total, refusing totals beyond kMaxValues.
@@ -246,65 +214,68 @@ void addValues(std::uint64_t& total, std::uint64_t a, std::uint64_t b, const std
 
 // The model skeleton from the header: every array sized (after checking the total against the
 // payload), no values yet. `mirrorOf` gets, per view, the stored view it mirrors (-1: stored).
-ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t version,
+ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::uint32_t version,
                       std::vector<int>& mirrorOf) {
   ClmModel model;
-  model.schemeJson = text(header, "scheme", "header");
-  model.settingsJson = text(header, "settings", "header");
-  const json& provenance = member(header, "provenance", "header");
-  model.provenance.dataset = text(provenance, "dataset", "provenance");
-  model.provenance.created = text(provenance, "created", "provenance");
-  model.provenance.toolVersion = text(provenance, "toolVersion", "provenance");
-  model.provenance.notes = text(provenance, "notes", "provenance");
-  const json& seed = member(provenance, "seed", "provenance");
-  if (!seed.is_number_unsigned()) fieldError("provenance.seed", "not an unsigned integer");
-  model.provenance.seed = seed.get<std::uint64_t>();
-  model.singleView = boolean(header, "singleView", "header");
-  model.patchRatio = number(header, "patchRatio", "header");
+  JsonFields header(headerValue, "", "header");
+  model.schemeJson = header.requiredString("scheme", true);
+  model.settingsJson = header.requiredString("settings", true);
+  JsonFields provenance = header.object("provenance");
+  model.provenance.dataset = provenance.requiredString("dataset", true);
+  model.provenance.created = provenance.requiredString("created", true);
+  model.provenance.toolVersion = provenance.requiredString("toolVersion", true);
+  model.provenance.notes = provenance.requiredString("notes", true);
+  model.provenance.seed = provenance.unsignedInteger("seed");
+  provenance.rejectUnknown();
+  model.singleView = header.boolean("singleView");
+  model.patchRatio = number(header, "patchRatio");
 
   // Size everything from the header first, checking the byte count before any allocation.
   std::uint64_t doubles = 0;
   std::uint64_t floats = 0;
-  const json& shape = member(header, "shape", "header");
-  const auto points = integer(shape, "points", "shape", 0, kMaxPoints);
-  const auto shapeModes = integer(shape, "modes", "shape", 0, 3 * kMaxPoints);
+  JsonFields shape = header.object("shape");
+  const auto points = shape.integer("points", 0, kMaxPoints);
+  const auto shapeModes = shape.integer("modes", 0, 3 * kMaxPoints);
   addValues(doubles, 3 * static_cast<std::uint64_t>(points),
             1 + static_cast<std::uint64_t>(shapeModes), "shape");
   addValues(doubles, static_cast<std::uint64_t>(shapeModes), 1, "shape");
-  const json& views = array(header, "views", "header", kMaxViews);
+  const Header& views = array(header, "views", kMaxViews);
+  header.rejectUnknown();
   mirrorOf.assign(views.size(), -1);
+  std::vector<JsonFields> viewFields;
+  std::vector<std::vector<JsonFields>> scaleFields(views.size());
   for (std::size_t v = 0; v < views.size(); ++v) {
-    const std::string field = "views[" + std::to_string(v) + "]";
-    const json& scales = array(views[v], "scales", field, kMaxScales);
+    JsonFields& view = viewFields.emplace_back(views[v], "", "views[" + std::to_string(v) + "]");
+    const Header& scales = array(view, "scales", kMaxScales);
     if (version >= 2) {
-      const auto source =
-          integer(views[v], "mirrorOf", field, -1, static_cast<std::int64_t>(views.size()) - 1);
+      const auto source = view.integer("mirrorOf", -1, static_cast<std::int64_t>(views.size()) - 1);
       if (source >= 0) {
-        const json& sourceView = views[static_cast<std::size_t>(source)];
+        const Header& sourceView = views[static_cast<std::size_t>(source)];
         if (source == static_cast<std::int64_t>(v) || !sourceView.is_object() ||
             !sourceView.contains("mirrorOf") || sourceView["mirrorOf"] != -1) {
-          fieldError(field + ".mirrorOf", "must name a view that is stored in full");
+          fieldError(view.name("mirrorOf"), "must name a view that is stored in full");
         }
         mirrorOf[v] = static_cast<int>(source);
         continue;  // no arrays: rebuilt from the source view
       }
     }
     for (std::size_t s = 0; s < scales.size(); ++s) {
-      const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
-      const auto patchSize = integer(scales[s], "patchSize", scaleField, 1, kMaxPatchSize);
-      const auto& landmarks =
-          array(scales[s], "landmarks", scaleField, static_cast<std::size_t>(kMaxPoints));
+      JsonFields& scale = scaleFields[v].emplace_back(
+          scales[s], "", view.name("scales") + "[" + std::to_string(s) + "]");
+      const auto patchSize = scale.integer("patchSize", 1, kMaxPatchSize);
+      const auto& landmarks = array(scale, "landmarks", static_cast<std::size_t>(kMaxPoints));
       const std::uint64_t d = landmarks.size() * static_cast<std::uint64_t>(patchSize * patchSize);
-      const auto modes = integer(scales[s], "modes", scaleField, 0,
-                                 static_cast<std::int64_t>(std::min<std::uint64_t>(d, kMaxValues)));
-      addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scaleField);  // mean, alpha, P
-      addValues(floats, static_cast<std::uint64_t>(modes), 1, scaleField);
-      if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
+      const auto modes = scale.integer(
+          "modes", 0, static_cast<std::int64_t>(std::min<std::uint64_t>(d, kMaxValues)));
+      addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scale.path());  // mean, alpha, P
+      addValues(floats, static_cast<std::uint64_t>(modes), 1, scale.path());
+      if (version >= 2 && scale.boolean("experts")) {
         // per landmark: version 2, weights, gain and bias; version 3, K x (weights, bias, alpha)
-        const auto units = static_cast<std::uint64_t>(expertUnits(scales[s], scaleField, version));
+        const auto units = static_cast<std::uint64_t>(expertUnits(scale, version));
         addValues(floats, landmarks.size() * units,
-                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scaleField);
+                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scale.path());
       }
+      scale.rejectUnknown();
     }
   }
   const std::uint64_t expected = 8 * doubles + 4 * floats;
@@ -313,21 +284,23 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t 
                 " bytes of arrays, the payload holds " + std::to_string(arrayBytes));
   }
 
-  model.shape.dims = static_cast<int>(integer(shape, "dims", "shape", 2, 3));
-  model.shape.limitSd = number(shape, "limitSd", "shape");
+  model.shape.dims = static_cast<int>(shape.integer("dims", 2, 3));
+  model.shape.limitSd = number(shape, "limitSd");
+  shape.rejectUnknown();
   model.shape.meanShape.resize(3, points);
   model.shape.modes.resize(3 * points, shapeModes);
   model.shape.variances.resize(shapeModes);
   for (std::size_t v = 0; v < views.size(); ++v) {
-    const std::string field = "views[" + std::to_string(v) + "]";
+    JsonFields& fields = viewFields[v];
     ViewModel view;
-    view.pitchDeg = number(views[v], "pitch", field);
-    view.yawDeg = number(views[v], "yaw", field);
-    view.mirrored = boolean(views[v], "mirrored", field);
-    const json& visible = array(views[v], "visible", field, static_cast<std::size_t>(kMaxPoints));
-    for (const json& flag : visible) {
+    view.pitchDeg = number(fields, "pitch");
+    view.yawDeg = number(fields, "yaw");
+    view.mirrored = fields.boolean("mirrored");
+    const Header& visible = array(fields, "visible", static_cast<std::size_t>(kMaxPoints));
+    fields.rejectUnknown();
+    for (const Header& flag : visible) {
       if (!flag.is_number_integer() || (flag != 0 && flag != 1)) {
-        fieldError(field + ".visible", "entries must be 0 or 1");
+        fieldError(fields.name("visible"), "entries must be 0 or 1");
       }
       view.visible.push_back(flag == 1);
     }
@@ -335,27 +308,24 @@ ClmModel skeletonFrom(const json& header, std::size_t arrayBytes, std::uint32_t 
       model.views.push_back(std::move(view));
       continue;
     }
-    const json& scales = member(views[v], "scales", field);
-    for (std::size_t s = 0; s < scales.size(); ++s) {
-      const std::string scaleField = field + ".scales[" + std::to_string(s) + "]";
+    for (JsonFields& scale : scaleFields[v]) {
       PatchModel patch;
-      patch.patchSize =
-          static_cast<int>(integer(scales[s], "patchSize", scaleField, 1, kMaxPatchSize));
-      for (const json& landmark : member(scales[s], "landmarks", scaleField)) {
+      patch.patchSize = static_cast<int>(scale.integer("patchSize", 1, kMaxPatchSize));
+      for (const Header& landmark : scale.at("landmarks")) {
         if (!landmark.is_number_integer() || landmark < 0 || landmark >= kMaxPoints) {
-          fieldError(scaleField + ".landmarks", "entries must be landmark indices");
+          fieldError(scale.name("landmarks"), "entries must be landmark indices");
         }
         patch.landmarks.push_back(landmark.get<int>());
       }
       const Eigen::Index pixels = Eigen::Index(patch.patchSize) * patch.patchSize;
       const Eigen::Index d = Eigen::Index(patch.landmarks.size()) * pixels;
-      const auto modes = static_cast<Eigen::Index>(integer(scales[s], "modes", scaleField, 0, d));
+      const auto modes = static_cast<Eigen::Index>(scale.integer("modes", 0, d));
       patch.pca.mean.resize(d);
       patch.pca.components.resize(d, modes);
       patch.pca.variances.resize(modes);
       patch.alpha.assign(patch.landmarks.size(), Eigen::VectorXf(pixels));
-      if (version >= 2 && boolean(scales[s], "experts", scaleField)) {
-        const auto units = static_cast<Eigen::Index>(expertUnits(scales[s], scaleField, version));
+      if (version >= 2 && scale.boolean("experts")) {
+        const auto units = static_cast<Eigen::Index>(expertUnits(scale, version));
         PatchExpert expert;
         expert.weights.resize(pixels, units);
         expert.bias.resize(units);
@@ -397,20 +367,20 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
   // loads is what the file says and writes back to the same bytes.
   std::vector<std::set<std::string>> keysOfOpenObjects;
   std::string duplicateKey;
-  const json::parser_callback_t rejectDuplicates = [&](int, json::parse_event_t event,
-                                                       json& parsed) {
-    if (event == json::parse_event_t::object_start) {
+  const Header::parser_callback_t rejectDuplicates = [&](int, Header::parse_event_t event,
+                                                         Header& parsed) {
+    if (event == Header::parse_event_t::object_start) {
       keysOfOpenObjects.emplace_back();
-    } else if (event == json::parse_event_t::object_end && !keysOfOpenObjects.empty()) {
+    } else if (event == Header::parse_event_t::object_end && !keysOfOpenObjects.empty()) {
       keysOfOpenObjects.pop_back();
-    } else if (event == json::parse_event_t::key && !keysOfOpenObjects.empty() &&
+    } else if (event == Header::parse_event_t::key && !keysOfOpenObjects.empty() &&
                !keysOfOpenObjects.back().insert(parsed.get<std::string>()).second &&
                duplicateKey.empty()) {
       duplicateKey = parsed.get<std::string>();
     }
     return true;
   };
-  const json header = json::parse(headerText, rejectDuplicates, false);
+  const Header header = Header::parse(headerText, rejectDuplicates, false);
   if (header.is_discarded() || !header.is_object()) throw Error("header is not a JSON object");
   if (!duplicateKey.empty()) throw Error("header gives the key \"" + duplicateKey + "\" twice");
 

@@ -1,5 +1,6 @@
 #include "core/model/patch_expert.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/model/texture_model.hpp"
@@ -11,7 +12,7 @@ float PatchExpert::response(const float* scores) const {
   for (Eigen::Index k = 0; k < weights.cols(); ++k) {
     sum += alpha[k] / (1.0f + std::exp(-(scores[k] + bias[k])));
   }
-  return sum;
+  return std::max(sum, 0.0f);  // a non-negative weight for the mean-shift, whatever the file says
 }
 
 PatchExpert PatchExpert::logistic(const Eigen::VectorXf& filter, float gain, float bias) {

@@ -5,6 +5,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 
 namespace clm3d {
 namespace {
@@ -26,14 +27,14 @@ std::string stored(const fs::path& folder, const fs::path& p) {
   return normalised(p).generic_string();
 }
 
-std::vector<fs::path> readList(const json& doc, const char* key, const Project& project,
+std::vector<fs::path> readList(JsonFields& doc, const char* key, const Project& project,
                                const fs::path& file) {
   std::vector<fs::path> out;
-  if (!doc.contains(key)) return out;
-  const json& list = doc.at(key);
-  if (!list.is_array())
+  const JsonValue* list = doc.find(key);
+  if (list == nullptr) return out;
+  if (!list->is_array())
     throw InputError(fileMessage(file, std::string("'") + key + "' must be a list"));
-  for (const json& entry : list) {
+  for (const JsonValue& entry : *list) {
     if (!entry.is_string() || entry.get<std::string>().empty()) {
       throw InputError(fileMessage(file, std::string("'") + key + "' must hold non-empty paths"));
     }
@@ -44,23 +45,21 @@ std::vector<fs::path> readList(const json& doc, const char* key, const Project& 
 
 // "tracker": {"model": PATH, "options": {NAME: VALUE}}; a value is a string, number or boolean and
 // is kept as the text the command line would take.
-void readTracker(const json& doc, Project& project, const fs::path& file) {
-  if (!doc.contains("tracker")) return;
-  const json& tracker = doc.at("tracker");
+void readTracker(JsonFields& doc, Project& project, const fs::path& file) {
+  if (!doc.has("tracker")) return;
+  JsonFields tracker = doc.object("tracker");
   const auto bad = [&](const std::string& what) {
     throw InputError(fileMessage(file, "\"tracker\" " + what));
   };
-  if (!tracker.is_object()) bad("must be an object");
-  if (tracker.contains("model")) {
-    const json& model = tracker.at("model");
-    if (!model.is_string()) bad("\"model\" must be a path");
-    if (!model.get<std::string>().empty())
-      project.trackerModel = project.resolve(model.get<std::string>());
-  }
-  if (!tracker.contains("options")) return;
-  const json& options = tracker.at("options");
-  if (!options.is_object()) bad("\"options\" must be an object");
-  for (const auto& [name, value] : options.items()) {
+  const std::string model = tracker.string("model", std::string(), true);
+  if (!model.empty()) project.trackerModel = project.resolve(model);
+  const JsonValue* options = tracker.find("options");
+  tracker.rejectUnknown();
+  if (options == nullptr) return;
+  if (!options->is_object()) bad("\"options\" must be an object");
+  // The option names are checked against the tracker's table where they are used
+  // (trackerSettingsFrom names this file and the option).
+  for (const auto& [name, value] : options->items()) {
     if (value.is_string()) {
       project.trackerOptions[name] = value.get<std::string>();
     } else if (value.is_boolean()) {
@@ -106,12 +105,7 @@ Project loadProject(const fs::path& folderOrFile) {
 }
 
 Project parseProject(std::string_view text, const fs::path& folder, const fs::path& file) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {  // also out_of_range: a number too large for a double
-    throw InputError(fileMessage(file, std::string("not valid JSON: ") + e.what()));
-  }
+  const JsonValue doc = parseJsonText(text, file.string());
   if (!doc.is_object() || !doc.contains("format") || !doc.at("format").is_string() ||
       doc.at("format").get<std::string>() != kFormat) {
     throw InputError(
@@ -122,20 +116,19 @@ Project parseProject(std::string_view text, const fs::path& folder, const fs::pa
     throw InputError(fileMessage(file, "unsupported project version (this clm3d reads version " +
                                            std::to_string(kVersion) + ")"));
   }
+  JsonFields fields(doc, file.string());
+  fields.allow({"format", "version"});  // checked above
   Project project;
   project.folder = normalised(folder);
-  try {
-    project.name = doc.value("name", project.folder.filename().string());
-    const std::string manifest = doc.value("manifest", std::string());
-    if (!manifest.empty()) project.manifest = project.resolve(manifest);
-  } catch (const json::type_error&) {
-    throw InputError(fileMessage(file, "\"name\" and \"manifest\" must be strings"));
-  }
-  project.models = readList(doc, "models", project, file);
-  project.videos = readList(doc, "videos", project, file);
-  project.tracks = readList(doc, "tracks", project, file);
-  project.groundTruth = readList(doc, "ground_truth", project, file);
-  readTracker(doc, project, file);
+  project.name = fields.string("name", project.folder.filename().string(), true);
+  const std::string manifest = fields.string("manifest", std::string(), true);
+  if (!manifest.empty()) project.manifest = project.resolve(manifest);
+  project.models = readList(fields, "models", project, file);
+  project.videos = readList(fields, "videos", project, file);
+  project.tracks = readList(fields, "tracks", project, file);
+  project.groundTruth = readList(fields, "ground_truth", project, file);
+  readTracker(fields, project, file);
+  fields.rejectUnknown();
   return project;
 }
 

@@ -1,15 +1,16 @@
 #include "core/scheme/ljson_format.hpp"
 
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 #include "core/scheme/text_scan.hpp"
 
 namespace clm3d {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using Json = JsonValue;
 
 class Parser {
  public:
@@ -19,11 +20,10 @@ class Parser {
     throwInputError(source_, field.empty() ? what : "field " + field + ": " + what);
   }
 
-  const Json& member(const Json& object, const std::string& key, const std::string& path) const {
+  // The members of an object at `path` (core/common/json_fields: unknown members refused).
+  JsonFields fields(const Json& object, const std::string& path) const {
     if (!object.is_object()) fail(path, "must be an object");
-    const auto it = object.find(key);
-    if (it == object.end()) fail(path.empty() ? key : path + "." + key, "missing");
-    return *it;
+    return JsonFields(object, source_, path);
   }
 
   const Json& array(const Json& value, const std::string& field) const {
@@ -80,10 +80,10 @@ class Parser {
     for (std::size_t l = 0; l < list.size(); ++l) {
       const std::string path = field + "[" + std::to_string(l) + "]";
       LjsonLabel label;
-      const auto& name = member(list[l], "label", path);
-      if (!name.is_string()) fail(path + ".label", "must be a string");
-      label.name = name.get<std::string>();
-      const auto& mask = array(member(list[l], "mask", path), path + ".mask");
+      JsonFields entry = fields(list[l], path);
+      label.name = entry.requiredString("label", true);
+      const auto& mask = array(entry.at("mask"), path + ".mask");
+      entry.rejectUnknown();
       for (std::size_t m = 0; m < mask.size(); ++m) {
         const auto& index = mask[m];
         const std::string maskField = path + ".mask[" + std::to_string(m) + "]";
@@ -123,14 +123,10 @@ LandmarkSet toSet(const std::vector<std::vector<double>>& rows, int dims) {
 
 LjsonLandmarks parseLjson(std::string_view text, const std::string& sourceName) {
   Parser parser(sourceName);
-  Json root;
-  try {
-    root = Json::parse(text.begin(), text.end());
-  } catch (const Json::exception& e) {
-    parser.fail("", std::string("not valid JSON: ") + e.what());
-  }
+  const Json root = parseJsonText(text, sourceName);
   if (!root.is_object()) parser.fail("", "must be a JSON object");
-  const auto& versionValue = parser.member(root, "version", "");
+  JsonFields top(root, sourceName);
+  const auto& versionValue = top.at("version");
   if (!versionValue.is_number_integer()) parser.fail("version", "must be 1, 2 or 3");
   const auto version = versionValue.get<long long>();
 
@@ -139,45 +135,50 @@ LjsonLandmarks parseLjson(std::string_view text, const std::string& sourceName) 
   LjsonLandmarks result;
 
   if (version == 1) {
-    const auto& groups = parser.array(parser.member(root, "groups", ""), "groups");
+    const auto& groups = parser.array(top.at("groups"), "groups");
     for (std::size_t g = 0; g < groups.size(); ++g) {
       const std::string path = "groups[" + std::to_string(g) + "]";
+      JsonFields group = parser.fields(groups[g], path);
+      group.allow({"connectivity"});  // menpo's edges between points: not used
       LjsonLabel label;
-      const auto& name = parser.member(groups[g], "label", path);
-      if (!name.is_string()) parser.fail(path + ".label", "must be a string");
-      label.name = name.get<std::string>();
-      const auto& landmarks =
-          parser.array(parser.member(groups[g], "landmarks", path), path + ".landmarks");
+      label.name = group.requiredString("label", true);
+      const auto& landmarks = parser.array(group.at("landmarks"), path + ".landmarks");
       for (std::size_t i = 0; i < landmarks.size(); ++i) {
         const std::string field = path + ".landmarks[" + std::to_string(i) + "]";
         label.indices.push_back(static_cast<int>(rows.size()));
-        parser.point(parser.member(landmarks[i], "point", field), field + ".point", rows, dims);
+        JsonFields landmark = parser.fields(landmarks[i], field);
+        parser.point(landmark.at("point"), field + ".point", rows, dims);
+        landmark.rejectUnknown();
       }
+      group.rejectUnknown();
       result.labels.push_back(std::move(label));
     }
   } else if (version == 2 || version == 3) {
-    const Json* group = &root;
-    std::string prefix;
-    // Version 3 nests one v2-like object per group; also accept a version 3 tag on the v2 layout.
+    JsonFields* group = &top;
+    std::optional<JsonFields> named;
+    // Version 3 nests one v2-like object per group (the first is read); also accept a version 3
+    // tag on the v2 layout.
     if (version == 3 && !(root.contains("landmarks") && !root.contains("groups"))) {
-      const auto& groups = parser.member(root, "groups", "");
+      const auto& groups = top.at("groups");
       if (!groups.is_object()) parser.fail("groups", "must be an object of named groups");
       if (groups.empty()) parser.fail("groups", "holds no landmark group");
       result.group = groups.begin().key();
-      group = &groups.begin().value();
-      prefix = "groups." + result.group + ".";
+      named.emplace(parser.fields(groups.begin().value(), "groups." + result.group));
+      group = &*named;
     }
-    const auto& landmarks = parser.member(
-        *group, "landmarks", prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1));
-    parser.points(parser.member(landmarks, "points", prefix + "landmarks"),
-                  prefix + "landmarks.points", rows, dims);
-    if (const auto it = group->find("labels"); it != group->end()) {
-      result.labels = parser.labels(*it, prefix + "labels", rows.size());
+    JsonFields landmarks = parser.fields(group->at("landmarks"), group->name("landmarks"));
+    landmarks.allow({"connectivity"});  // menpo's edges between points: not used
+    parser.points(landmarks.at("points"), landmarks.name("points"), rows, dims);
+    landmarks.rejectUnknown();
+    if (const Json* labels = group->find("labels")) {
+      result.labels = parser.labels(*labels, group->name("labels"), rows.size());
     }
+    group->rejectUnknown();
   } else {
     parser.fail("version", "unsupported LJSON version " + std::to_string(version) +
                                " (this build reads 1, 2 and 3)");
   }
+  top.rejectUnknown();
   result.points = toSet(rows, dims);
   return result;
 }

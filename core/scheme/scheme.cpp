@@ -1,11 +1,11 @@
 #include "core/scheme/scheme.hpp"
 
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 
 namespace clm3d {
 namespace embedded {
@@ -15,7 +15,7 @@ std::string_view ibug68SchemeJson();
 
 namespace {
 
-using Json = nlohmann::json;
+using Json = JsonValue;
 
 constexpr std::string_view kFormatTag = "clm3d-landmark-scheme";
 
@@ -28,10 +28,10 @@ class Reader {
     throwInputError(source_, field.empty() ? what : "field " + field + ": " + what);
   }
 
-  const Json& member(const Json& object, const std::string& key, const std::string& path) const {
-    const auto it = object.find(key);
-    if (it == object.end()) fail(path + key, "missing");
-    return *it;
+  // The members of an object at `path` (core/common/json_fields: unknown members refused).
+  JsonFields fields(const Json& object, const std::string& path, const std::string& what) const {
+    if (!object.is_object()) fail(path, what);
+    return JsonFields(object, source_, path);
   }
 
   std::string string(const Json& value, const std::string& field) const {
@@ -103,49 +103,44 @@ bool isValidId(const std::string& id) {
 
 Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
   Reader reader(sourceName);
-  Json root;
-  try {
-    root = Json::parse(text.begin(), text.end());
-  } catch (const Json::exception& e) {
-    reader.fail("", std::string("not valid JSON: ") + e.what());
-  }
+  const Json root = parseJsonText(text, sourceName);
   if (!root.is_object()) reader.fail("", "must be a JSON object");
+  JsonFields top(root, sourceName);
 
-  if (const auto it = root.find("format"); it != root.end()) {
+  if (const Json* it = top.find("format")) {
     if (reader.string(*it, "format") != kFormatTag) {
       reader.fail("format", "must be \"" + std::string(kFormatTag) + "\"");
     }
   }
-  if (const auto it = root.find("version"); it != root.end()) {
+  if (const Json* it = top.find("version")) {
     if (!it->is_number_integer() || it->get<long long>() != 1) {
       reader.fail("version", "unsupported scheme version (this build reads version 1)");
     }
   }
 
   Scheme scheme;
-  scheme.name_ = reader.string(reader.member(root, "name", ""), "name");
+  scheme.name_ = reader.string(top.at("name"), "name");
   if (!isValidId(scheme.name_)) {
     reader.fail("name", "must be a non-empty word of letters, digits, '_', '-' or '.'");
   }
-  if (const auto it = root.find("description"); it != root.end()) {
+  if (const Json* it = top.find("description")) {
     scheme.description_ = reader.string(*it, "description");
   }
 
-  const auto& landmarks = reader.array(reader.member(root, "landmarks", ""), "landmarks");
+  const auto& landmarks = reader.array(top.at("landmarks"), "landmarks");
   if (landmarks.empty()) reader.fail("landmarks", "must list at least one landmark");
   std::unordered_map<std::string, int> indexById;
   for (std::size_t i = 0; i < landmarks.size(); ++i) {
     const std::string path = "landmarks[" + std::to_string(i) + "]";
-    const auto& entry = landmarks[i];
-    if (!entry.is_object()) reader.fail(path, "must be an object with \"id\" and \"label\"");
-    auto id = reader.string(reader.member(entry, "id", path + "."), path + ".id");
+    JsonFields entry =
+        reader.fields(landmarks[i], path, "must be an object with \"id\" and \"label\"");
+    auto id = reader.string(entry.at("id"), path + ".id");
     if (!isValidId(id)) {
       reader.fail(path + ".id", "\"" + id + "\" is not a word of letters, digits, '_', '-' or '.'");
     }
     std::string label = id;
-    if (const auto it = entry.find("label"); it != entry.end()) {
-      label = reader.string(*it, path + ".label");
-    }
+    if (const Json* it = entry.find("label")) label = reader.string(*it, path + ".label");
+    entry.rejectUnknown();
     if (!indexById.emplace(id, static_cast<int>(i)).second) {
       reader.fail(path + ".id", "duplicate landmark id \"" + id + "\"");
     }
@@ -156,7 +151,7 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
 
   scheme.mirror_.resize(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) scheme.mirror_[static_cast<std::size_t>(i)] = i;
-  if (const auto it = root.find("mirror_pairs"); it != root.end()) {
+  if (const Json* it = top.find("mirror_pairs")) {
     const auto& pairs = reader.array(*it, "mirror_pairs");
     std::vector<bool> paired(static_cast<std::size_t>(count), false);
     for (std::size_t p = 0; p < pairs.size(); ++p) {
@@ -179,26 +174,26 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
   }
 
   scheme.regionOf_.assign(static_cast<std::size_t>(count), -1);
-  if (const auto it = root.find("regions"); it != root.end()) {
+  if (const Json* it = top.find("regions")) {
     const auto& regions = reader.array(*it, "regions");
     for (std::size_t r = 0; r < regions.size(); ++r) {
       const std::string path = "regions[" + std::to_string(r) + "]";
-      if (!regions[r].is_object()) reader.fail(path, "must be an object");
+      JsonFields entry = reader.fields(regions[r], path, "must be an object");
       LandmarkRegion region;
-      region.name = reader.string(reader.member(regions[r], "name", path + "."), path + ".name");
+      region.name = reader.string(entry.at("name"), path + ".name");
       for (const auto& other : scheme.regions_) {
         if (other.name == region.name) {
           reader.fail(path + ".name", "duplicate region \"" + region.name + "\"");
         }
       }
       region.colour = {128, 128, 128};
-      if (const auto colour = regions[r].find("colour"); colour != regions[r].end()) {
+      if (const Json* colour = entry.find("colour")) {
         if (!parseColour(reader.string(*colour, path + ".colour"), region.colour)) {
           reader.fail(path + ".colour", "must be \"#rrggbb\" (hexadecimal)");
         }
       }
-      const auto& members =
-          reader.array(reader.member(regions[r], "landmarks", path + "."), path + ".landmarks");
+      const auto& members = reader.array(entry.at("landmarks"), path + ".landmarks");
+      entry.rejectUnknown();
       for (std::size_t m = 0; m < members.size(); ++m) {
         const std::string field = path + ".landmarks[" + std::to_string(m) + "]";
         const int index = reader.landmark(members[m], field, indexById, count);
@@ -217,7 +212,7 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
     }
   }
 
-  const auto& normalisation = reader.member(root, "normalisation", "");
+  const auto& normalisation = top.at("normalisation");
   if (!normalisation.is_array() || normalisation.size() != 2) {
     reader.fail("normalisation", "must be a pair of landmark ids, e.g. the two eye centres");
   }
@@ -227,24 +222,23 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
     reader.fail("normalisation", "must name two different landmarks");
   }
 
-  if (const auto it = root.find("ljson_layouts"); it != root.end()) {
+  if (const Json* it = top.find("ljson_layouts")) {
     const auto& layouts = reader.array(*it, "ljson_layouts");
     for (std::size_t l = 0; l < layouts.size(); ++l) {
       const std::string path = "ljson_layouts[" + std::to_string(l) + "]";
-      if (!layouts[l].is_object()) reader.fail(path, "must be an object");
+      JsonFields entry = reader.fields(layouts[l], path, "must be an object");
       LjsonLayout layout;
-      layout.name = reader.string(reader.member(layouts[l], "name", path + "."), path + ".name");
-      const auto& labels =
-          reader.array(reader.member(layouts[l], "labels", path + "."), path + ".labels");
+      layout.name = reader.string(entry.at("name"), path + ".name");
+      const auto& labels = reader.array(entry.at("labels"), path + ".labels");
+      entry.rejectUnknown();
       std::vector<bool> used(static_cast<std::size_t>(count), false);
       for (std::size_t g = 0; g < labels.size(); ++g) {
         const std::string labelPath = path + ".labels[" + std::to_string(g) + "]";
-        if (!labels[g].is_object()) reader.fail(labelPath, "must be an object");
+        JsonFields labelEntry = reader.fields(labels[g], labelPath, "must be an object");
         LjsonLayout::Label label;
-        label.name =
-            reader.string(reader.member(labels[g], "label", labelPath + "."), labelPath + ".label");
-        const auto& members = reader.array(reader.member(labels[g], "landmarks", labelPath + "."),
-                                           labelPath + ".landmarks");
+        label.name = reader.string(labelEntry.at("label"), labelPath + ".label");
+        const auto& members = reader.array(labelEntry.at("landmarks"), labelPath + ".landmarks");
+        labelEntry.rejectUnknown();
         for (std::size_t m = 0; m < members.size(); ++m) {
           const std::string field = labelPath + ".landmarks[" + std::to_string(m) + "]";
           const int index = reader.landmark(members[m], field, indexById, count);
@@ -264,6 +258,7 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
       scheme.ljsonLayouts_.push_back(std::move(layout));
     }
   }
+  top.rejectUnknown();
   return scheme;
 }
 

@@ -448,4 +448,36 @@ TrackTable readTrackTable(const std::filesystem::path& path) {
   return parseTrackTable(readTextFile(path), path.string());
 }
 
+std::vector<std::string> numericTrackColumns(const TrackTable& table) {
+  std::vector<std::string> names = {"frame", "timestamp", "success", "confidence", "view"};
+  for (const char* pose : kPoseColumns) names.emplace_back(pose);
+  names.insert(names.end(), table.extraColumns.begin(), table.extraColumns.end());
+  return names;
+}
+
+std::optional<double> trackColumnValue(const TrackTable& table, const TrackRow& row,
+                                       std::string_view column) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  if (column == "frame") return row.frame;
+  if (column == "timestamp") return row.timestamp;
+  if (column == "success") return row.success ? 1.0 : 0.0;
+  if (column == "confidence") return row.confidence;
+  if (column == "view") return row.view;
+  for (std::size_t k = 0; k < kPoseColumns.size(); ++k) {
+    if (column != kPoseColumns[k]) continue;
+    if (!row.pose) return kNan;
+    const Pose& pose = *row.pose;
+    const std::array<double, 7> values = {
+        pose.translation.x(), pose.translation.y(), pose.translation.z(), pose.scale,
+        degrees(pose.pitch),  degrees(pose.yaw),    degrees(pose.roll)};
+    return values[k];
+  }
+  for (std::size_t k = 0; k < table.extraColumns.size(); ++k) {
+    if (column != table.extraColumns[k]) continue;
+    if (k >= row.extraCells.size() || row.extraCells[k].empty()) return kNan;
+    return text::parseNumberOrNan(row.extraCells[k]).value_or(kNan);
+  }
+  return std::nullopt;
+}
+
 }  // namespace clm3d

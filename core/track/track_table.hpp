@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/geometry/pose.hpp"
@@ -68,5 +69,13 @@ std::string formatTrackTable(const TrackTable& table);
 // their cells.
 TrackTable readTrackTable(const std::filesystem::path& path);
 TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
+
+// The numeric columns a row can be looked up by: frame, timestamp, success, confidence, view, the
+// pose's tx, ty, tz, scale, pitch, yaw, roll (degrees, as written), then the extra columns.
+std::vector<std::string> numericTrackColumns(const TrackTable& table);
+// The value of one of those columns in a row (NaN for an empty cell, a row without a pose, or an
+// extra cell that is not a number); nullopt when the table has no column of that name.
+std::optional<double> trackColumnValue(const TrackTable& table, const TrackRow& row,
+                                       std::string_view column);
 
 }  // namespace clm3d

@@ -1,8 +1,7 @@
 #include "core/track/tracker_options.hpp"
 
-#include <algorithm>
-#include <charconv>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 #include "core/common/error.hpp"
@@ -11,129 +10,70 @@
 namespace clm3d {
 namespace {
 
-std::string realText(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return {buffer, result.ptr};
-}
+using S = TrackerSettings;
 
-std::string rangeText(const TrackerOption& option) {
-  if (option.kind == OptionKind::Integer) {
-    return std::to_string(static_cast<std::int64_t>(option.minimum)) + ".." +
-           std::to_string(static_cast<std::int64_t>(option.maximum));
-  }
-  return realText(option.minimum) + ".." + realText(option.maximum);
+TrackerOption scoped(Option<S> option, OptionScope scope) {
+  return TrackerOption{std::move(option), scope};
 }
-
-[[noreturn]] void badValue(const TrackerOption& option, std::string_view text,
-                           const std::string& valid) {
-  throw InputError("--" + option.name + ": '" + std::string(text) + "' is not valid (" + valid +
-                   ")");
-}
-
-template <typename T>
-T parseNumber(const TrackerOption& option, std::string_view text) {
-  T value{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  const bool whole = ec == std::errc() && end == text.data() + text.size();
-  if (!whole || !(static_cast<double>(value) >= option.minimum) ||
-      !(static_cast<double>(value) <= option.maximum)) {
-    badValue(option, text,
-             std::string(option.kind == OptionKind::Integer ? "a whole number" : "a number") +
-                 " in " + rangeText(option));
-  }
-  return value;
-}
-
-using RealField = double& (*)(TrackerSettings&);
-using IntField = int& (*)(TrackerSettings&);
 
 TrackerOption real(std::string name, std::string label, std::string group, OptionScope scope,
                    double minimum, double maximum, int decimals, std::string help,
-                   RealField field) {
-  TrackerOption option{std::move(name),
-                       std::move(label),
-                       std::move(group),
-                       scope,
-                       OptionKind::Real,
-                       std::move(help),
-                       minimum,
-                       maximum,
-                       decimals,
-                       {},
-                       {},
-                       {}};
-  option.get = [field](const TrackerSettings& settings) {
-    TrackerSettings copy = settings;
-    return realText(field(copy));
-  };
-  option.set = [field, option](TrackerSettings& settings, std::string_view text) {
-    field(settings) = parseNumber<double>(option, text);
-  };
-  return option;
+                   double& (*field)(S&)) {
+  return scoped(realOption<S>({std::move(name),
+                               std::move(label),
+                               std::move(group),
+                               OptionKind::Real,
+                               std::move(help),
+                               minimum,
+                               maximum,
+                               decimals,
+                               {}},
+                              field),
+                scope);
 }
 
 TrackerOption integer(std::string name, std::string label, std::string group, OptionScope scope,
-                      int minimum, int maximum, std::string help, IntField field) {
-  TrackerOption option{std::move(name),
-                       std::move(label),
-                       std::move(group),
-                       scope,
-                       OptionKind::Integer,
-                       std::move(help),
-                       static_cast<double>(minimum),
-                       static_cast<double>(maximum),
-                       0,
-                       {},
-                       {},
-                       {}};
-  option.get = [field](const TrackerSettings& settings) {
-    TrackerSettings copy = settings;
-    return std::to_string(field(copy));
-  };
-  option.set = [field, option](TrackerSettings& settings, std::string_view text) {
-    field(settings) = parseNumber<int>(option, text);
-  };
-  return option;
+                      int minimum, int maximum, std::string help, int& (*field)(S&)) {
+  return scoped(integerOption<S>({std::move(name),
+                                  std::move(label),
+                                  std::move(group),
+                                  OptionKind::Integer,
+                                  std::move(help),
+                                  static_cast<double>(minimum),
+                                  static_cast<double>(maximum),
+                                  0,
+                                  {}},
+                                 field),
+                scope);
+}
+
+TrackerOption flag(std::string name, std::string label, std::string group, OptionScope scope,
+                   std::string help, bool& (*field)(S&), bool inverted) {
+  return scoped(flagOption<S>({std::move(name),
+                               std::move(label),
+                               std::move(group),
+                               OptionKind::Flag,
+                               std::move(help),
+                               0.0,
+                               1.0,
+                               0,
+                               {}},
+                              field, inverted),
+                scope);
 }
 
 TrackerOption choice(std::string name, std::string label, std::string group, OptionScope scope,
                      std::vector<std::string> choices, std::string help,
-                     std::function<std::string(const TrackerSettings&)> get,
-                     std::function<void(TrackerSettings&, const std::string&)> apply) {
-  TrackerOption option{std::move(name),
-                       std::move(label),
-                       std::move(group),
-                       scope,
-                       OptionKind::Choice,
-                       std::move(help),
-                       0.0,
-                       0.0,
-                       0,
-                       std::move(choices),
-                       std::move(get),
-                       {}};
-  option.set = [apply = std::move(apply), option](TrackerSettings& settings,
-                                                  std::string_view text) {
-    const std::string value(text);
-    if (std::find(option.choices.begin(), option.choices.end(), value) == option.choices.end()) {
-      std::string valid;
-      for (const std::string& c : option.choices) valid += (valid.empty() ? "" : ", ") + c;
-      throw InputError("unknown " + option.name + " '" + value + "' (valid: " + valid + ")");
-    }
-    apply(settings, value);
-  };
-  return option;
-}
-
-bool parseFlag(const TrackerOption& option, std::string_view text) {
-  if (text == "true" || text == "1") return true;
-  if (text == "false" || text == "0") return false;
-  badValue(option, text, "true or false");
+                     std::function<std::string(const S&)> get,
+                     std::function<void(S&, const std::string&)> apply) {
+  return scoped(
+      choiceOption<S>({std::move(name), std::move(label), std::move(group), OptionKind::Choice,
+                       std::move(help), 0.0, 0.0, 0, std::move(choices)},
+                      std::move(get), std::move(apply)),
+      scope);
 }
 
 std::vector<TrackerOption> buildOptions() {
-  using S = TrackerSettings;
   std::vector<TrackerOption> options;
   const OptionScope search = OptionScope::Search;
   const OptionScope track = OptionScope::Track;
@@ -151,25 +91,9 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(integer("iterations", "Iterations per scale", "Search", search, 1, 100,
                             "iterations per scale",
                             [](S& s) -> int& { return s.fit.maxIterations; }));
-  {
-    TrackerOption noAlpha{"no-alpha",
-                          "No alpha masks",
-                          "Search",
-                          search,
-                          OptionKind::Flag,
-                          "do not mask patches with the alpha masks",
-                          0.0,
-                          1.0,
-                          0,
-                          {},
-                          {},
-                          {}};
-    noAlpha.get = [](const S& s) { return std::string(s.fit.alphaMask ? "false" : "true"); };
-    noAlpha.set = [noAlpha](S& s, std::string_view text) {
-      s.fit.alphaMask = !parseFlag(noAlpha, text);
-    };
-    options.push_back(std::move(noAlpha));
-  }
+  options.push_back(flag(
+      "no-alpha", "No alpha masks", "Search", search, "do not mask patches with the alpha masks",
+      [](S& s) -> bool& { return s.fit.alphaMask; }, true));
   options.push_back(choice(
       "detector", "Face detector", "Search", search, {"cascade", "dlib"},
       "face detector: cascade (OpenCV) or dlib (HOG)",
@@ -189,25 +113,18 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(integer("texture-modes", "Texture modes", "Search", search, 0, 1000,
                             "texture modes used to synthesise the templates (0 = all)",
                             [](S& s) -> int& { return s.fit.textureModes; }));
-  {
-    TrackerOption seed{"seed",
-                       "Random seed",
-                       "Search",
-                       search,
-                       OptionKind::Integer,
-                       "random seed (condensation)",
-                       0.0,
-                       static_cast<double>(std::numeric_limits<std::int32_t>::max()),
-                       0,
-                       {},
-                       {},
-                       {}};
-    seed.get = [](const S& s) { return std::to_string(s.fit.optimiserSettings.seed); };
-    seed.set = [seed](S& s, std::string_view text) {
-      s.fit.optimiserSettings.seed = parseNumber<std::uint64_t>(seed, text);
-    };
-    options.push_back(std::move(seed));
-  }
+  options.push_back(
+      scoped(integerOption<S>({"seed",
+                               "Random seed",
+                               "Search",
+                               OptionKind::Integer,
+                               "random seed (condensation)",
+                               0.0,
+                               static_cast<double>(std::numeric_limits<std::int32_t>::max()),
+                               0,
+                               {}},
+                              [](S& s) -> std::uint64_t& { return s.fit.optimiserSettings.seed; }),
+             search));
   options.push_back(integer("rlms-radius", "rlms search radius", "Search", search, 1, 32,
                             "rlms: search window radius around each landmark (pixels of each "
                             "scale)",
@@ -257,26 +174,11 @@ std::vector<TrackerOption> buildOptions() {
                          [](S& s) -> double& { return s.viewSearchExpertConfidence; }));
 
   // --- Smoothing (clm3d track; core/track/track_smoother.hpp) ------------------------------------
-  {
-    TrackerOption smooth{"smooth",
-                         "Smooth the points",
-                         "Smoothing",
-                         track,
-                         OptionKind::Flag,
-                         "smooth the written points over time (one-euro filter; a failed or "
-                         "re-detected frame restarts it; docs/tracking.md)",
-                         0.0,
-                         1.0,
-                         0,
-                         {},
-                         {},
-                         {}};
-    smooth.get = [](const S& s) { return std::string(s.smoothing.enabled ? "true" : "false"); };
-    smooth.set = [smooth](S& s, std::string_view text) {
-      s.smoothing.enabled = parseFlag(smooth, text);
-    };
-    options.push_back(std::move(smooth));
-  }
+  options.push_back(flag(
+      "smooth", "Smooth the points", "Smoothing", track,
+      "smooth the written points over time (one-euro filter; a failed or "
+      "re-detected frame restarts it; docs/tracking.md)",
+      [](S& s) -> bool& { return s.smoothing.enabled; }, false));
   options.push_back(real("smooth-min-cutoff", "Cutoff when still (Hz)", "Smoothing", track, 0.01,
                          100.0, 2,
                          "with --smooth: cutoff frequency of a still point in Hz (lower: less "
@@ -299,36 +201,16 @@ const std::vector<TrackerOption>& trackerOptions() {
 }
 
 const TrackerOption* findTrackerOption(std::string_view name) {
-  for (const TrackerOption& option : trackerOptions()) {
-    if (option.name == name) return &option;
-  }
-  return nullptr;
+  return findOption(trackerOptions(), name);
 }
 
 std::map<std::string, std::string> changedTrackerOptions(const TrackerSettings& settings) {
-  std::map<std::string, std::string> changed;
-  for (const TrackerOption& option : trackerOptions()) {
-    const std::string text = option.get(settings);
-    if (text != option.defaultText()) changed[option.name] = text;
-  }
-  return changed;
+  return changedOptions(trackerOptions(), settings);
 }
 
 TrackerSettings trackerSettingsFrom(const std::map<std::string, std::string>& options,
                                     const std::string& source) {
-  TrackerSettings settings;
-  for (const auto& [name, text] : options) {
-    const TrackerOption* option = findTrackerOption(name);
-    if (option == nullptr) {
-      throw InputError(source + ": unknown tracker option '" + name + "'");
-    }
-    try {
-      option->set(settings, text);
-    } catch (const InputError& error) {
-      throw InputError(source + ": " + error.what());
-    }
-  }
-  return settings;
+  return settingsFromOptions<TrackerSettings>(trackerOptions(), options, source, "tracker option");
 }
 
 }  // namespace clm3d

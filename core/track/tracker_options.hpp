@@ -7,41 +7,23 @@
 // entries stay valid for the program's life.
 #pragma once
 
-#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/common/option_table.hpp"
 #include "core/track/tracker.hpp"
 
 namespace clm3d {
-
-enum class OptionKind { Integer, Real, Flag, Choice };
 
 // Search: the options of the search itself (`clm3d fit` and `clm3d track`); Track: the tracker's
 // own (failure thresholds, motion, view search, smoothing; `clm3d track` only).
 enum class OptionScope { Search, Track };
 
-struct TrackerOption {
-  std::string name;   // as on the command line without "--", e.g. "min-expert-confidence"
-  std::string label;  // the studio's label
-  std::string group;  // the studio's section: "Search", "Failure", "Motion", "Smoothing"
+// An option of the table (core/common/option_table.hpp) and the commands it belongs to.
+struct TrackerOption : Option<TrackerSettings> {
   OptionScope scope = OptionScope::Search;
-  OptionKind kind = OptionKind::Real;
-  std::string help;      // the command line's help and the studio's tooltip
-  double minimum = 0.0;  // Integer and Real: inclusive range
-  double maximum = 0.0;
-  int decimals = 2;                  // Real: digits the studio shows
-  std::vector<std::string> choices;  // Choice: the valid values
-  // The value as text, as it is written after the option on the command line (Flag: "true" or
-  // "false"; Real: the shortest text that reads back to the same double).
-  std::function<std::string(const TrackerSettings&)> get;
-  // Parses `text` into the settings; InputError saying the option, the value and the valid range
-  // or choices when it is not valid.
-  std::function<void(TrackerSettings&, std::string_view text)> set;
-
-  std::string defaultText() const { return get(TrackerSettings{}); }
 };
 
 const std::vector<TrackerOption>& trackerOptions();

@@ -155,9 +155,10 @@ PatchExpert padded(const PatchExpert& linear, int units) {
 
 // Grows a one-unit expert into a neural field of settings.units units: the units' responses
 // summed with weights alpha, fitted to the windows' Gaussian targets by mini-batch Adam (squared
-// error, a small weight decay). The first unit starts as the linear expert, the others as small
-// random filters with weight 0. The last tenth of the regions is held out: the neural field is kept
-// only if it beats the linear expert there, else the linear expert is returned padded to the units.
+// error, a small weight decay; unit weights kept non-negative). The first unit starts as the
+// linear expert, the others as small random filters, mostly off, with weight 0.1. The last tenth of
+// the regions is held out: the neural field is kept only if it beats the linear expert there, else
+// the linear expert is returned padded to the units.
 PatchExpert trainNeuralField(const Eigen::Ref<const Eigen::MatrixXf>& regions,
                              const ExpertTrainingSettings& settings, const PatchExpert& linear) {
   Eigen::MatrixXf windows;
@@ -186,8 +187,8 @@ PatchExpert trainNeuralField(const Eigen::Ref<const Eigen::MatrixXf>& regions,
       expert.weights(i, k) = spread * static_cast<float>(random.normal());
     }
     expert.weights.col(k).array() -= expert.weights.col(k).mean();
-    expert.bias[k] = 0.0f;
-    expert.alpha[k] = 0.0f;
+    expert.bias[k] = -2.0f;  // mostly off at first
+    expert.alpha[k] = 0.1f;
   }
 
   // One shuffle of the training windows; mini-batches in that order every epoch.
@@ -237,7 +238,9 @@ PatchExpert trainNeuralField(const Eigen::Ref<const Eigen::MatrixXf>& regions,
       expert.bias = bias.matrix().col(0);
       Eigen::ArrayXXf alpha = expert.alpha.array();
       adamA.step(alpha, gradAlpha, rate, t);
-      expert.alpha = alpha.matrix().col(0);
+      // Non-negative unit weights, as in local neural fields: the response stays a non-negative
+      // weight for the mean-shift, and no unit can say "not here".
+      expert.alpha = alpha.max(0.0f).matrix().col(0);
     }
   }
   // Zero-mean filters: normalised windows are zero-mean, so this changes no score.

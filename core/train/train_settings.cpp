@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/train/train_options.hpp"
 
 namespace clm3d {
 namespace {
@@ -24,35 +25,9 @@ std::vector<double> sortedUnique(std::vector<double> values) {
 }  // namespace
 
 void TrainSettings::validate() const {
-  require(!yawsDeg.empty() && !pitchesDeg.empty(),
-          "the view grid needs at least one yaw and pitch");
-  for (double yaw : yawsDeg) require(std::abs(yaw) <= 90, "view yaw must be within +-90 degrees");
-  for (double pitch : pitchesDeg) {
-    require(std::abs(pitch) <= 60, "view pitch must be within +-60 degrees");
-  }
-  require(scales >= 1 && scales <= 5, "scales must be 1..5");
-  require(patchSize >= 4 && patchSize <= 64, "patch size must be 4..64 pixels");
-  require(patchRatio >= 0.05 && patchRatio <= 1.0, "patch ratio must be 0.05..1");
-  require(samplesPerView >= 1 && samplesPerView <= 100, "samples per view must be 1..100");
-  require(textureVariance > 0 && textureVariance <= 1, "texture variance must be in (0, 1]");
-  require(shape.varianceKept > 0 && shape.varianceKept <= 1, "shape variance must be in (0, 1]");
-  require(textureMaxModes >= 0, "texture max modes must be >= 0");
-  require(hiddenShare >= 0 && hiddenShare <= 1,
-          "hidden share must be in [0, 1] (1 keeps every landmark)");
-  require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
-  require(expertRadius >= 0 && expertRadius <= 16, "expert radius must be 0..16 pixels");
-  require(expertRidge > 0 && expertRidge <= 100, "expert ridge must be in (0, 100]");
-  require(expertUnits >= 1 && expertUnits <= 16, "expert units must be 1..16");
-  require(photoJitter >= 0 && photoJitter <= 20, "photo jitter must be 0..20");
-  require(threads >= 0 && threads <= 64, "threads must be 0..64");
-  const PerturbationSettings& p = perturbation;
-  require(p.rotationDeg >= 0 && p.rotationDeg <= 20, "rotation jitter must be 0..20 degrees");
-  require(p.viewCoverage >= 0 && p.viewCoverage <= 1.5, "view coverage must be 0..1.5");
-  require(p.scale >= 0 && p.scale <= 0.3, "scale jitter must be 0..0.3");
-  require(p.shiftPixels >= 0 && p.shiftPixels <= 4, "shift jitter must be 0..4 pixels");
-  require(p.lightDirection >= 0 && p.lightDirection <= 1, "light jitter must be 0..1");
-  require(p.ambient >= 0 && p.ambient <= 0.4 && p.diffuse >= 0 && p.diffuse <= 0.6,
-          "ambient/diffuse jitter must be 0..0.4 / 0..0.6");
+  // Every option's value against its range (core/train/train_options: the ranges of `clm3d
+  // train` and of the studio's form); the error names the option.
+  checkOptions(trainOptions(), *this, "training settings");
   const AugmentationSettings& a = augmentation;
   require(a.colourJitter >= 0 && a.colourJitter <= AugmentationSettings::kMaxColourJitter,
           "augmentation colour jitter must be 0..0.5");

@@ -1,5 +1,6 @@
 // clm3d frames through the real binary: a lossless video's frames come out as numbered images,
-// the count is reported, and a missing video exits 1 naming the file.
+// the count is reported, progress is one meter line (app/commands/cli_progress), and a missing
+// video exits 1 naming the file.
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
@@ -13,14 +14,18 @@ namespace {
 
 using test::runClm3d;
 
+// A lossless 32x24 video of `frames` grey frames, each a different shade.
+void writeGreyVideo(const std::filesystem::path& video, int frames, int step) {
+  VideoWriter writer(video, 32, 24, 25.0);
+  for (int i = 0; i < frames; ++i)
+    writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(step * i)));
+  writer.close();
+}
+
 TEST(FramesCli, WritesEveryNthFrame) {
   test::TempDir dir;
   const auto video = dir / "v.avi";
-  {
-    VideoWriter writer(video, 32, 24, 25.0);
-    for (int i = 0; i < 7; ++i) writer.write(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(30 * i)));
-    writer.close();
-  }
+  writeGreyVideo(video, 7, 30);
   const auto result = runClm3d("frames --video " + video.string() + " --out " +
                                (dir / "frames").string() + " --every 2 --format jpg --quiet");
   ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -30,6 +35,21 @@ TEST(FramesCli, WritesEveryNthFrame) {
     EXPECT_TRUE(std::filesystem::exists(dir / "frames" / name)) << name;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_000001.jpg"));
+}
+
+TEST(FramesCli, ProgressIsOneMeterLineEndedOnce) {
+  test::TempDir dir;
+  const auto video = dir / "v.avi";
+  writeGreyVideo(video, 3, 60);
+  const auto result =
+      runClm3d("frames --video " + video.string() + " --out " + (dir / "frames").string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  // Redrawn in place (carriage returns), 100% said once, then a line break before the summary.
+  const auto done = result.output.find("exporting frames: 100.0%\n");
+  ASSERT_NE(done, std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("100.0%", done + 24), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("100.0%"), done + 18) << result.output;
+  EXPECT_EQ(result.output.find('\r'), 0u) << result.output;
 }
 
 TEST(FramesCli, AMissingVideoExits1NamingIt) {

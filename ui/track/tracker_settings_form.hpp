@@ -1,4 +1,5 @@
-// The tracker's settings as a form, built from core's option table (core/track/tracker_options):
+// The tracker's settings as a form, built from core's option table (core/track/tracker_options)
+// with the shared option widgets (ui/common/option_fields):
 // one field per option, grouped as the table groups them, labelled with the table's label and
 // with a tooltip holding its help, command-line name, default and range, so the studio and
 // `clm3d track` cannot describe an option differently. Each field's object name is the option's

@@ -1,16 +1,15 @@
-// The training settings as a form: every field of TrainSettings (views, scales, patch size, PCA
-// variances, perturbations, mirroring, seed, threads) with the CLI's ranges and a tooltip saying
-// what it does, so a run from the studio can be made exactly like one from `clm3d train`.
+// The training settings as a form, built from core's option table (core/train/train_options) with
+// the shared option widgets (ui/common/option_fields): one field per option of `clm3d train`,
+// grouped as the table groups them, with the table's label, range and a tooltip holding its help,
+// command-line name and default, so a run from the studio can be made exactly like one from the
+// command line. Each field's object name is the option's name (e.g. "views-yaw").
 #pragma once
 
 #include <QWidget>
+#include <vector>
 
+#include "core/train/train_options.hpp"
 #include "core/train/train_settings.hpp"
-
-class QCheckBox;
-class QDoubleSpinBox;
-class QLineEdit;
-class QSpinBox;
 
 namespace clm3d::ui {
 
@@ -19,42 +18,18 @@ class SettingsForm : public QWidget {
  public:
   explicit SettingsForm(QWidget* parent = nullptr);
 
-  // The settings as entered; throws InputError naming the field when a view list does not parse
-  // or the settings are out of range (TrainSettings::validate).
+  // The settings as entered; throws InputError naming the option when a view list does not parse
+  // or the settings are out of range (TrainSettings::validate). Threads 0 becomes every core but
+  // one, so that the GUI thread is never starved by the renders.
   TrainSettings settings() const;
   void setSettings(const TrainSettings& settings);
 
  private:
-  QLineEdit* yaws_;
-  QLineEdit* pitches_;
-  QCheckBox* singleView_;
-  QCheckBox* mirrorRightViews_;
-  QSpinBox* scales_;
-  QSpinBox* patchSize_;
-  QDoubleSpinBox* patchRatio_;
-  QSpinBox* samplesPerView_;
-  QDoubleSpinBox* hiddenShare_;
-  QSpinBox* supersample_;
-  QDoubleSpinBox* textureVariance_;
-  QSpinBox* textureMaxModes_;
-  QDoubleSpinBox* shapeVariance_;
-  QSpinBox* shapeMaxModes_;
-  QDoubleSpinBox* shapeLimit_;
-  QCheckBox* mirrorShapes_;
-  QDoubleSpinBox* rotation_;
-  QDoubleSpinBox* viewCoverage_;
-  QDoubleSpinBox* scaleJitter_;
-  QDoubleSpinBox* shift_;
-  QDoubleSpinBox* light_;
-  QDoubleSpinBox* ambient_;
-  QDoubleSpinBox* diffuse_;
-  QLineEdit* seed_;
-  QSpinBox* threads_;
+  struct Field {
+    const TrainOption* option;
+    QWidget* widget;
+  };
+  std::vector<Field> fields_;
 };
-
-// "-60, -30, 0" -> {-60, -30, 0}; throws InputError "training settings: FIELD: ..." for an empty
-// list or an entry that is not a number.
-std::vector<double> parseAngleList(const QString& text, const std::string& field);
-QString formatAngleList(const std::vector<double>& values);
 
 }  // namespace clm3d::ui

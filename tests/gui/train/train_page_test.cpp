@@ -91,7 +91,7 @@ class TrainPageTest : public QObject {
     const TrainSettings tiny = tinySettings(2);
     form.setSettings(tiny);
     QCOMPARE(form.settings().toJson(), tiny.toJson());
-    auto* yaws = form.findChild<QLineEdit*>("viewYaws");
+    auto* yaws = form.findChild<QLineEdit*>("views-yaw");
     QVERIFY(yaws != nullptr);
     QVERIFY(!yaws->toolTip().isEmpty());
     yaws->setText("-30, left");

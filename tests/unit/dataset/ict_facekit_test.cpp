@@ -190,6 +190,13 @@ TEST(IctFaceKit, ErrorsNameTheManifestFieldOrTheDataFile) {
   writeFile(dir / "vertices.json", R"({"scheme": "ibug68", "vertices": []})");
   message = inputErrorOf([&] { sampleShapeOnlyLandmarks(model.manifest(""), 1); });
   EXPECT_EQ(message.rfind((dir / "vertices.json").string() + ": field scheme:", 0), 0u) << message;
+
+  // The vertex table's fields are read with core/common/json_fields: an unknown key is refused.
+  writeFile(dir / "vertices.json", R"({"scheme": "thesis25", "vertices": [], "vertexes": [1]})");
+  message = inputErrorOf([&] { sampleShapeOnlyLandmarks(model.manifest(""), 1); });
+  EXPECT_EQ(message.rfind((dir / "vertices.json").string() + ": field vertexes: unknown field", 0),
+            0u)
+      << message;
 }
 
 TEST(IctFaceKit, CancelStops) {

@@ -131,6 +131,46 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   EXPECT_NE(parseError(good + "x").find("1 unexpected bytes"), std::string::npos);
 }
 
+// The file with its header JSON replaced (its length and the checksum fixed).
+std::string withHeader(const std::string& file, const std::string& header) {
+  const std::string payload = file.substr(24);
+  std::uint64_t headerLength = 0;
+  std::memcpy(&headerLength, payload.data(), 8);
+  std::string length(8, '\0');
+  const std::uint64_t size = header.size();
+  std::memcpy(length.data(), &size, 8);
+  return withPayload(file, length + header + payload.substr(8 + headerLength));
+}
+
+std::string headerOf(const std::string& file) {
+  std::uint64_t headerLength = 0;
+  std::memcpy(&headerLength, file.data() + 24, 8);
+  return file.substr(32, headerLength);
+}
+
+TEST(ModelFile, UnknownHeaderKeysAreRefusedNamingTheFileAndTheKey) {
+  const std::string good = serializeModel(test::makeTinyModel());
+  const std::string header = headerOf(good);
+  EXPECT_EQ(parseError(withHeader(good, header)), "");  // the helper keeps a good file good
+  ASSERT_EQ(header.front(), '{');
+  const std::string top = parseError(withHeader(good, "{\"colour\":1," + header.substr(1)));
+  EXPECT_NE(top.find("m.clm3d: field header.colour: unknown field"), std::string::npos) << top;
+  std::string inView = header;
+  const auto pitch = inView.find("\"pitch\"");
+  ASSERT_NE(pitch, std::string::npos);
+  inView.insert(pitch, "\"roll\":0,");
+  const std::string view = parseError(withHeader(good, inView));
+  EXPECT_NE(view.find("m.clm3d: field views[0].roll: unknown field"), std::string::npos) << view;
+  std::string inProvenance = header;
+  const auto notes = inProvenance.find("\"notes\"");
+  ASSERT_NE(notes, std::string::npos);
+  inProvenance.insert(notes, "\"author\":\"x\",");
+  const std::string provenance = parseError(withHeader(good, inProvenance));
+  EXPECT_NE(provenance.find("m.clm3d: field header.provenance.author: unknown field"),
+            std::string::npos)
+      << provenance;
+}
+
 TEST(ModelFile, RejectsInconsistentContentWithAValidChecksum) {
   const std::string good = serializeModel(test::makeTinyModel());
   const std::string payload = good.substr(24);

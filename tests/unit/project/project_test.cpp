@@ -104,7 +104,15 @@ TEST(Project, BrokenFilesAreClearErrorsNamingTheFile) {
   writeText(file, "{\"format\": \"clm3d-project\", \"version\": 1, \"videos\": [3]}");
   EXPECT_NE(errorOf(file).find("non-empty paths"), std::string::npos);
   writeText(file, "{\"format\": \"clm3d-project\", \"version\": 1, \"manifest\": 3}");
-  EXPECT_NE(errorOf(file).find("must be strings"), std::string::npos);
+  EXPECT_NE(errorOf(file).find("field manifest: expected a string"), std::string::npos);
+  // Unknown keys are refused naming the file and the key (core/common/json_fields).
+  writeText(file, "{\"format\": \"clm3d-project\", \"version\": 1, \"vidoes\": []}");
+  EXPECT_NE(errorOf(file).find(file.string() + ": field vidoes: unknown field"), std::string::npos)
+      << errorOf(file);
+  writeText(file,
+            "{\"format\": \"clm3d-project\", \"version\": 1, \"tracker\": {\"modle\": \"m\"}}");
+  EXPECT_NE(errorOf(file).find("field tracker.modle: unknown field"), std::string::npos)
+      << errorOf(file);
 }
 
 }  // namespace

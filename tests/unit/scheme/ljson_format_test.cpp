@@ -158,6 +158,17 @@ TEST(Ljson, BadInputsNameFileAndField) {
        "groups.g.landmarks.points: must be an array"},
       {R"({"version": 1, "groups": [{"label": "a", "landmarks": [{"p": [1, 2]}]}]})",
        "groups[0].landmarks[0].point: missing"},
+      // Unknown keys are refused at every level (menpo's "connectivity" is known).
+      {R"({"version": 2, "landmarks": {"points": [[1, 2]]}, "lables": []})",
+       "field lables: unknown field"},
+      {R"({"version": 2, "landmarks": {"points": [[1, 2]], "connectivity": [], "colour": 1}})",
+       "field landmarks.colour: unknown field"},
+      {R"({"version": 3, "groups": {"g": {"landmarks": {"points": [[1, 2]]}, "extra": 1}}})",
+       "field groups.g.extra: unknown field"},
+      {R"({"version": 2, "landmarks": {"points": [[1, 2]]}, "labels": [{"label": "a", "mask": [0], "colour": 1}]})",
+       "field labels[0].colour: unknown field"},
+      {R"({"version": 1, "groups": [{"label": "a", "landmarks": [{"point": [1, 2], "z": 0}]}]})",
+       "field groups[0].landmarks[0].z: unknown field"},
   };
   for (const auto& c : cases) {
     const auto message = ljsonError(c.text);

@@ -1,0 +1,56 @@
+#include "app/commands/cli_progress.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace clm3d::cli {
+
+CliProgress::CliProgress(Style style, bool quiet, std::ostream& out)
+    : style_(style), quiet_(quiet), out_(out) {}
+
+CliProgress::CliProgress(Style style, bool quiet) : CliProgress(style, quiet, std::cerr) {}
+
+CliProgress::~CliProgress() {
+  finish();
+}
+
+void CliProgress::setDetail(std::function<std::string()> detail) {
+  std::lock_guard lock(mutex_);
+  detail_ = std::move(detail);
+}
+
+void CliProgress::operator()(double fraction, std::string_view stage) {
+  if (quiet_) return;
+  std::lock_guard lock(mutex_);
+  if (style_ == Style::Lines) {
+    out_ << stage << '\n' << std::flush;
+    return;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  const bool done = fraction >= 1.0;
+  if (drawn_ && !done && now - lastDraw_ < std::chrono::seconds(1)) return;
+  if (drawn_ && done && drewDone_) return;  // the end is said once
+  lastDraw_ = now;
+  drawn_ = true;
+  drewDone_ = done;
+  std::ostringstream line;
+  line << '\r' << stage << ": " << std::fixed << std::setprecision(1)
+       << 100.0 * (std::isfinite(fraction) ? fraction : 0.0) << '%';
+  if (detail_) line << ' ' << detail_();
+  out_ << line.str() << std::flush;
+}
+
+ProgressCallback CliProgress::callback() {
+  return [this](double fraction, std::string_view stage) { (*this)(fraction, stage); };
+}
+
+void CliProgress::finish() {
+  std::lock_guard lock(mutex_);
+  if (!drawn_) return;
+  drawn_ = false;
+  out_ << '\n' << std::flush;
+}
+
+}  // namespace clm3d::cli

@@ -1,0 +1,98 @@
+#include "core/common/option_table.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+
+#include "core/common/error.hpp"
+
+namespace clm3d {
+namespace {
+
+[[noreturn]] void badValue(const OptionSpec& option, std::string_view text,
+                           const std::string& valid) {
+  throw InputError("--" + option.name + ": '" + std::string(text) + "' is not valid (" + valid +
+                   ")");
+}
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+  return text;
+}
+
+template <typename T>
+T parseNumber(const OptionSpec& option, std::string_view text, const char* what) {
+  T value{};
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const bool whole = ec == std::errc() && end == text.data() + text.size();
+  if (!whole || !(static_cast<double>(value) >= option.minimum) ||
+      !(static_cast<double>(value) <= option.maximum)) {
+    badValue(option, text, std::string(what) + " in " + optionRangeText(option));
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string optionRealText(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return {buffer, result.ptr};
+}
+
+std::string optionRangeText(const OptionSpec& option) {
+  if (option.kind == OptionKind::Integer) {
+    return std::to_string(static_cast<std::int64_t>(option.minimum)) + ".." +
+           std::to_string(static_cast<std::int64_t>(option.maximum));
+  }
+  return optionRealText(option.minimum) + ".." + optionRealText(option.maximum);
+}
+
+long long parseOptionInteger(const OptionSpec& option, std::string_view text) {
+  return parseNumber<long long>(option, text, "a whole number");
+}
+
+double parseOptionReal(const OptionSpec& option, std::string_view text) {
+  return parseNumber<double>(option, text, "a number");
+}
+
+bool parseOptionFlag(const OptionSpec& option, std::string_view text) {
+  if (text == "true" || text == "1") return true;
+  if (text == "false" || text == "0") return false;
+  badValue(option, text, "true or false");
+}
+
+const std::string& parseOptionChoice(const OptionSpec& option, std::string_view text) {
+  const auto found = std::find(option.choices.begin(), option.choices.end(), text);
+  if (found == option.choices.end()) {
+    std::string valid;
+    for (const std::string& c : option.choices) valid += (valid.empty() ? "" : ", ") + c;
+    throw InputError("unknown " + option.name + " '" + std::string(text) + "' (valid: " + valid +
+                     ")");
+  }
+  return *found;
+}
+
+std::vector<double> parseOptionRealList(const OptionSpec& option, std::string_view text) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string_view item = trimmed(text.substr(start, comma - start));
+    if (!item.empty()) {
+      values.push_back(parseNumber<double>(option, item, "numbers separated by commas, each"));
+    }
+    start = comma + 1;
+  }
+  if (values.empty()) badValue(option, text, "at least one number");  // e.g. "" or ","
+  return values;
+}
+
+std::string optionRealListText(const std::vector<double>& values) {
+  std::string text;
+  for (double value : values) text += (text.empty() ? "" : ",") + optionRealText(value);
+  return text;
+}
+
+}  // namespace clm3d
