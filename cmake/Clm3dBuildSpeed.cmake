@@ -34,6 +34,11 @@ set(CLM3D_LINKER "${clm3d_linker_default}" CACHE STRING
     "Linker passed to the compiler as -fuse-ld=<value> (lld when installed; empty: the default ld)")
 if(CLM3D_LINKER)
   add_link_options(-fuse-ld=${CLM3D_LINKER})
+  if(CLM3D_LINKER STREQUAL "lld")
+    # lld's own build id is 8 bytes; keep ld.bfd's 20-byte sha1, the usual name of the files in
+    # the dbgsym package (/usr/lib/debug/.build-id/).
+    add_link_options(LINKER:--build-id=sha1)
+  endif()
 endif()
 
 # Every buildsystem target defined in DIR and below.
