@@ -5,8 +5,9 @@
 # benchmarks run briefly, label bench) and the Debian package installed into a temporary root and
 # run. Each stage prints its wall time, and a table of them ends the run (docs/testing.md lists
 # them and where the time goes; CI must stay under 45 minutes on 2 cores).
-# Environment: CLM3D_FUZZ_SECONDS (default 15 per target), CLM3D_SKIP_SANITIZERS=1 to skip the
-# fuzzers and the ASan and TSan passes when iterating locally.
+# Environment: CLM3D_FUZZ_SECONDS (default 15 per target), CLM3D_FUZZ_JOBS (fuzzers run at once,
+# default the number of cores), CLM3D_SKIP_SANITIZERS=1 to skip the fuzzers and the ASan and TSan
+# passes when iterating locally.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
