@@ -21,7 +21,7 @@
 #include "ui/annotate/annotation_document.hpp"
 #include "ui/annotate/landmark_commands.hpp"
 #include "ui/annotate/landmark_list.hpp"
-#include "ui/annotate/landmark_suggestions.hpp"
+#include "core/model/landmark_suggestions.hpp"
 #include "ui/annotate/scan_mouse.hpp"
 #include "ui/annotate/scan_view.hpp"
 #include "ui/common/error_dialog.hpp"

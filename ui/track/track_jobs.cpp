@@ -6,7 +6,7 @@
 #include "core/track/retrack.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
-#include "ui/track/review_overlay.hpp"
+#include "core/review/review_overlay.hpp"
 
 namespace clm3d::ui {
 namespace {

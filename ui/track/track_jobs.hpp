@@ -12,7 +12,7 @@
 #include "core/track/retrack.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/job_runner.hpp"
-#include "ui/track/track_session.hpp"
+#include "core/review/track_session.hpp"
 
 namespace clm3d::ui {
 

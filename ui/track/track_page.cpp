@@ -36,7 +36,7 @@
 #include "ui/track/frame_view.hpp"
 #include "ui/track/landmark_marks.hpp"
 #include "ui/track/player_bar.hpp"
-#include "ui/track/review_overlay.hpp"
+#include "core/review/review_overlay.hpp"
 #include "ui/track/review_panel.hpp"
 #include "ui/track/timeline_widget.hpp"
 #include "ui/track/track_files_panel.hpp"

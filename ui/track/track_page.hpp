@@ -13,7 +13,7 @@
 #include "core/track/correction_loop.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/page.hpp"
-#include "ui/track/track_session.hpp"
+#include "core/review/track_session.hpp"
 
 class QBoxLayout;
 class QCheckBox;
