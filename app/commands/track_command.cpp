@@ -14,11 +14,13 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "app/commands/interrupt_scope.hpp"
+#include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/fit_overlay.hpp"
+#include "core/track/track_table_writer.hpp"
 #include "core/track/tracker.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
@@ -56,13 +58,13 @@ void runTrack(const TrackArgs& args) {
   InterruptScope interrupt;
   const auto begin = std::chrono::steady_clock::now();
   auto lastReport = begin;
-  TrackTable table;
+  std::size_t written = 0;  // rows streamed to the output so far
   const auto progress = [&](double fraction, std::string_view) {
     const auto now = std::chrono::steady_clock::now();
     if (args.quiet || (now - lastReport < std::chrono::seconds(1) && fraction < 1.0)) return;
     lastReport = now;
     std::cerr << "\rtracking: " << std::fixed << std::setprecision(1) << 100.0 * fraction << "% ("
-              << table.rows.size() << " frames)" << std::flush;
+              << written << " frames)" << std::flush;
   };
   const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
     if (!overlay) return;
@@ -72,19 +74,27 @@ void runTrack(const TrackArgs& args) {
   };
   TrackSummary summary;
   bool cancelled = false;
-  try {
-    summary = trackVideo(args.video, model, settings, table, perFrame, progress, &interrupt.token(),
-                         initial);
-  } catch (const Cancelled&) {
-    cancelled = true;
-  }
+  // Rows are written as they are made (memory stays flat over a long video) into a temporary file
+  // renamed into place at the end; Ctrl-C keeps the frames tracked so far.
+  writeFileAtomically(args.out, [&](std::ostream& out) {
+    TrackTableWriter writer(out, model.shape.pointCount());
+    const auto onRow = [&](TrackRow&& row) {
+      writer.write(row);
+      ++written;
+    };
+    try {
+      summary = trackVideo(args.video, model, settings, onRow, perFrame, progress,
+                           &interrupt.token(), initial);
+    } catch (const Cancelled&) {
+      cancelled = true;
+    }
+  });
   interrupt.release();
   if (!args.quiet) std::cerr << '\n';
-  writeTrackTable(args.out, table);
   if (overlay) overlay->close();
   if (cancelled) {
-    throw InputError("cancelled after " + std::to_string(table.rows.size()) +
-                     " frames; those are in " + args.out.string());
+    throw InputError("cancelled after " + std::to_string(written) + " frames; those are in " +
+                     args.out.string());
   }
 
   const double seconds =
