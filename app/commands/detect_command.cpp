@@ -114,9 +114,6 @@ void addDetectCommand(CLI::App& root) {
       ->check(CLI::Range(0, 100000));
   command->add_flag("!--no-profiles", args->settings.detector.profiles,
                     "cascade: frontal cascade only");
-  command->add_flag("!--profiles-always", args->settings.detector.profilesOnlyWithoutFrontal,
-                    "cascade: run the profile cascade on every image (default: only where the "
-                    "frontal cascade found no face)");
   command->add_flag("--calibrate", args->calibrate,
                     "report the box calibration measured on the photos (medians)");
   command

@@ -215,7 +215,7 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
   if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return boxes;
   if (kind_ == DetectorKind::Cascade) {
     impl_->runCascade(impl_->frontal, grey, settings, false, false, boxes);
-    if (settings.profiles && (boxes.empty() || !settings.profilesOnlyWithoutFrontal)) {
+    if (settings.profiles) {
       impl_->runCascade(impl_->profile, grey, settings, true, false, boxes);
       cv::Mat flipped;
       cv::flip(grey, flipped, 1);

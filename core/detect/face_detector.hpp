@@ -37,12 +37,7 @@ struct FaceDetectorSettings {
   double scaleFactor = 1.1;  // cascade: step between pyramid scales (> 1)
   int minNeighbours = 3;     // cascade: raw detections a box needs (>= 1)
   bool profiles = true;      // cascade: also run the profile cascade, on the image and its mirror
-  // cascade: run the profile cascade only when the frontal cascade found no face. Its two passes
-  // (image and mirror) are about two thirds of the detector's time; where the frontal cascade
-  // finds a face, the profile boxes mostly lie on that same face (docs/initialisation.md). false:
-  // always run it, so a profile box can outrank a frontal one (frontalPreference).
-  bool profilesOnlyWithoutFrontal = true;
-  bool equalise = true;  // histogram equalisation of the grey image before detecting
+  bool equalise = true;      // histogram equalisation of the grey image before detecting
   // > 0: images whose larger side exceeds this are searched reduced to it (faster on large
   // photos and HD video; faces below max(24, minFaceSize x reduction) reduced pixels are missed)
   int maxImageSide = 0;
