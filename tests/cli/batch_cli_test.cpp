@@ -2,7 +2,8 @@
 // a broken video and a broken image (error rows with their messages, the rest done, exit 1), the
 // same outputs on one and on two threads, three shards merged into the whole run's summary, a run
 // killed with SIGKILL half-way that a rerun finishes without redoing finished items or leaving a
-// half-written file, and the usage errors.
+// half-written file, the track options reaching the videos and a rerun with other options refused,
+// and the usage errors.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -209,6 +210,51 @@ TEST(BatchCli, UsageErrorsAndMissingInputs) {
   const auto noShards = runClm3d("batch merge --out-dir " + (f.dir / "list-out").string());
   EXPECT_EQ(noShards.exitCode, 1);
   EXPECT_TRUE(test::contains(noShards.output, "no shard summary")) << noShards.output;
+}
+
+// Videos are tracked with the options of `clm3d track` (and streamed to the same CSV bytes as
+// writeTrackTable's); the options are recorded beside the outputs, a rerun with other options is
+// refused, with the same ones it resumes, --redo takes new ones.
+TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
+  const Files& f = files();
+  const fs::path video = f.made.inputs / "d-left.avi";
+  const fs::path job = f.dir / "one-video.txt";
+  test::writeFile(job, video.string() + "\n");
+  const fs::path out = f.dir / "options";
+  const std::string batch = "batch --model " + f.made.model.string() + " --input " + job.string() +
+                            " --out-dir " + out.string();
+  const std::string options = " --smooth --smooth-min-cutoff 0.05 --motion-prediction 0.5";
+
+  const auto first = runClm3d(batch + options);
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  const auto track =
+      runClm3d("track --quiet --model " + f.made.model.string() + " --video " + video.string() +
+               " --out " + (f.dir / "tracked.csv").string() + options);
+  ASSERT_EQ(track.exitCode, 0) << track.output;
+  EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(f.dir / "tracked.csv"));
+  // Both stream their rows (TrackTableWriter); the bytes are those of writeTrackTable.
+  EXPECT_EQ(test::readFile(out / "d-left.csv"),
+            formatTrackTable(readTrackTable(out / "d-left.csv")));
+  EXPECT_NE(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"))
+      << "the options changed nothing";
+  const std::string recorded = test::readFile(out / "options.txt");
+  EXPECT_TRUE(contains(recorded, "\nsmooth=true\n")) << recorded;
+  EXPECT_TRUE(contains(recorded, "\nmotion-prediction=0.5\n")) << recorded;
+
+  const auto other = runClm3d(batch + " --smooth");
+  EXPECT_EQ(other.exitCode, 1) << other.output;
+  EXPECT_TRUE(contains(other.output, "options.txt")) << other.output;
+  EXPECT_TRUE(contains(other.output, "--motion-prediction 0.5 there, default now")) << other.output;
+
+  const auto same = runClm3d(batch + options);
+  EXPECT_EQ(same.exitCode, 0) << same.output;
+  EXPECT_TRUE(contains(same.output, "0 items run")) << same.output;
+  EXPECT_TRUE(contains(same.output, "1 finished before")) << same.output;
+
+  const auto redo = runClm3d(batch + " --redo");
+  EXPECT_EQ(redo.exitCode, 0) << redo.output;
+  EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"));
+  EXPECT_FALSE(contains(test::readFile(out / "options.txt"), "smooth")) << "not recorded again";
 }
 
 }  // namespace
