@@ -238,23 +238,23 @@ TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
   EXPECT_NE(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"))
       << "the options changed nothing";
   const std::string recorded = test::readFile(out / "options.txt");
-  EXPECT_TRUE(contains(recorded, "\nsmooth=true\n")) << recorded;
-  EXPECT_TRUE(contains(recorded, "\nmotion-prediction=0.5\n")) << recorded;
+  EXPECT_TRUE(test::contains(recorded, "\nsmooth=true\n")) << recorded;
+  EXPECT_TRUE(test::contains(recorded, "\nmotion-prediction=0.5\n")) << recorded;
 
   const auto other = runClm3d(batch + " --smooth");
   EXPECT_EQ(other.exitCode, 1) << other.output;
-  EXPECT_TRUE(contains(other.output, "options.txt")) << other.output;
-  EXPECT_TRUE(contains(other.output, "--motion-prediction 0.5 there, default now")) << other.output;
+  EXPECT_TRUE(test::contains(other.output, "options.txt")) << other.output;
+  EXPECT_TRUE(test::contains(other.output, "--motion-prediction 0.5 there, default now")) << other.output;
 
   const auto same = runClm3d(batch + options);
   EXPECT_EQ(same.exitCode, 0) << same.output;
-  EXPECT_TRUE(contains(same.output, "0 items run")) << same.output;
-  EXPECT_TRUE(contains(same.output, "1 finished before")) << same.output;
+  EXPECT_TRUE(test::contains(same.output, "0 items run")) << same.output;
+  EXPECT_TRUE(test::contains(same.output, "1 finished before")) << same.output;
 
   const auto redo = runClm3d(batch + " --redo");
   EXPECT_EQ(redo.exitCode, 0) << redo.output;
   EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"));
-  EXPECT_FALSE(contains(test::readFile(out / "options.txt"), "smooth")) << "not recorded again";
+  EXPECT_FALSE(test::contains(test::readFile(out / "options.txt"), "smooth")) << "not recorded again";
 }
 
 }  // namespace
