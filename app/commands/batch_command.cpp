@@ -92,15 +92,22 @@ void reportCounts(int items, int ok, int noFace, int errors, const fs::path& sum
   }
 }
 
-void runLocal(const BatchArgs& args) {
-  const BatchJob job = makeJob(args);
-  const ClmModel model = loadModel(args.model);
+// Images are fitted with the search part of the tracker options, videos tracked with all of them.
+BatchSettings makeSettings(const BatchArgs& args) {
   BatchSettings settings;
+  settings.track = args.fit.tracker;
   settings.image.fit = args.fit.settings();
   settings.image.detector = args.fit.detectorKind();
+  settings.image.startSearch = args.fit.tracker.startSearch;
   settings.image.verticalFovDeg = args.fit.fovDeg;
-  settings.track.fit = settings.image.fit;
-  settings.track.detector = settings.image.detector;
+  return settings;
+}
+
+void runLocal(const BatchArgs& args) {
+  const BatchJob job = makeJob(args);
+  const BatchSettings settings = makeSettings(args);
+  if (!job.redo) checkBatchOptions(job.outDir, batchOptions(job, settings));  // before the load
+  const ClmModel model = loadModel(args.model);
   InterruptScope interrupt;
   CliProgress progress(CliProgress::Style::Lines, args.quiet);
   const auto begin = std::chrono::steady_clock::now();
@@ -127,6 +134,7 @@ void runLocal(const BatchArgs& args) {
 void runSlurm(const BatchArgs& args) {
   if (!args.shard.empty()) throw CLI::ValidationError("--shard", "--slurm picks the shards itself");
   const BatchJob job = makeJob(args);  // bad input is reported here, not in every task's log
+  if (!job.redo) checkBatchOptions(job.outDir, batchOptions(job, makeSettings(args)));
   const int tasks = std::min<int>(args.slurmTasks, static_cast<int>(job.inputs.size()));
   std::error_code error;
   const fs::path slurmDir = fs::absolute(args.outDir) / "slurm";
@@ -231,6 +239,9 @@ void addBatchCommand(CLI::App& root) {
                       "(repeat for more)");
   command->add_flag("--no-wait", args->noWait,
                     "with --slurm: submit and return; merge later with `clm3d batch merge`");
+  // Every option of `clm3d track` (core/track/tracker_options): the search ones apply to images
+  // too; recorded in OUT/options.txt, and a rerun with others is refused.
+  addTrackerOptions(*command, args->fit.tracker, OptionScope::Track);
   addFitOptions(*command, args->fit);
 
   auto mergeDir = std::make_shared<fs::path>();

@@ -15,11 +15,13 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/fit_options.hpp"
 #include "app/commands/interrupt_scope.hpp"
+#include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/fit_overlay.hpp"
+#include "core/track/track_table_writer.hpp"
 #include "core/track/tracker.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
@@ -56,10 +58,10 @@ void runTrack(const TrackArgs& args) {
 
   InterruptScope interrupt;
   const auto begin = std::chrono::steady_clock::now();
-  TrackTable table;
+  std::size_t written = 0;  // rows streamed to the output so far
   // trackVideo reports from this thread after each frame, so the row count is safe to read.
   CliProgress progress(CliProgress::Style::Meter, args.quiet);
-  progress.setDetail([&table] { return "(" + std::to_string(table.rows.size()) + " frames)"; });
+  progress.setDetail([&written] { return "(" + std::to_string(written) + " frames)"; });
   const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
     if (!overlay) return;
     cv::Mat drawn = frame.clone();
@@ -68,19 +70,27 @@ void runTrack(const TrackArgs& args) {
   };
   TrackSummary summary;
   bool cancelled = false;
-  try {
-    summary = trackVideo(args.video, model, settings, table, perFrame, progress.callback(),
-                         &interrupt.token(), initial);
-  } catch (const Cancelled&) {
-    cancelled = true;
-  }
+  // Rows are written as they are made (memory stays flat over a long video) into a temporary file
+  // renamed into place at the end; Ctrl-C keeps the frames tracked so far.
+  writeFileAtomically(args.out, [&](std::ostream& out) {
+    TrackTableWriter writer(out, model.shape.pointCount());
+    const auto onRow = [&](TrackRow&& row) {
+      writer.write(row);
+      ++written;
+    };
+    try {
+      summary = trackVideo(args.video, model, settings, onRow, perFrame, progress.callback(),
+                           &interrupt.token(), initial);
+    } catch (const Cancelled&) {
+      cancelled = true;
+    }
+  });
   interrupt.release();
   progress.finish();
-  writeTrackTable(args.out, table);
   if (overlay) overlay->close();
   if (cancelled) {
-    throw InputError("cancelled after " + std::to_string(table.rows.size()) +
-                     " frames; those are in " + args.out.string());
+    throw InputError("cancelled after " + std::to_string(written) + " frames; those are in " +
+                     args.out.string());
   }
 
   const double seconds =

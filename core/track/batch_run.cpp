@@ -16,7 +16,8 @@
 #include "core/common/error.hpp"
 #include "core/common/image_list.hpp"
 #include "core/common/parallel_for.hpp"
-#include "core/track/track_table.hpp"
+#include "core/track/track_table_writer.hpp"
+#include "core/track/tracker_options.hpp"
 
 namespace clm3d {
 namespace {
@@ -25,6 +26,33 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr const char* kHeader = "item,status,frames,failures,time,error";
+constexpr const char* kOptionsComment =
+    "# clm3d batch: the options the outputs in this folder were made with (docs/batch.md)";
+
+std::string formatBatchOptions(const std::map<std::string, std::string>& options) {
+  std::string text = std::string(kOptionsComment) + '\n';
+  for (const auto& [name, value] : options) text += name + '=' + value + '\n';
+  return text;
+}
+
+std::map<std::string, std::string> parseBatchOptions(const fs::path& path) {
+  std::istringstream in(readTextFile(path));
+  std::map<std::string, std::string> options;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line.front() == '#') continue;
+    const auto equals = line.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throwInputError(path, "line " + std::to_string(number) +
+                                " is not name=value; remove the file to run with new options");
+    }
+    options[line.substr(0, equals)] = line.substr(equals + 1);
+  }
+  return options;
+}
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -168,9 +196,14 @@ BatchRow runVideo(const ClmModel& model, const TrackerSettings& settings, const 
                   const fs::path& output, const CancelToken* cancel) {
   const auto begin = Clock::now();
   try {
-    TrackTable table;
-    const TrackSummary summary = trackVideo(input, model, settings, table, {}, {}, cancel);
-    writeTrackTable(output, table);
+    // The rows go to the output's temporary file as they are made (memory stays flat over a long
+    // video); an error or a cancel removes it, so there is never half a table.
+    TrackSummary summary;
+    writeFileAtomically(output, [&](std::ostream& out) {
+      TrackTableWriter writer(out, model.shape.pointCount());
+      summary = trackVideo(
+          input, model, settings, [&writer](TrackRow&& row) { writer.write(row); }, {}, {}, cancel);
+    });
     BatchRow row;
     row.item = input.string();
     row.status = ImageFitStatus::Ok;
@@ -260,6 +293,45 @@ fs::path batchSummaryPath(const fs::path& outDir, const BatchShard& shard) {
          ("summary-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".csv");
 }
 
+std::map<std::string, std::string> batchOptions(const BatchJob& job,
+                                                const BatchSettings& settings) {
+  std::map<std::string, std::string> options = changedTrackerOptions(settings.track);
+  if (settings.image.verticalFovDeg != kDefaultVerticalFovDeg) {
+    std::ostringstream fov;
+    fov << settings.image.verticalFovDeg;
+    options["fov"] = fov.str();
+  }
+  if (!job.initDir.empty()) options["init-dir"] = job.initDir.string();
+  return options;
+}
+
+fs::path batchOptionsPath(const fs::path& outDir) {
+  return outDir / "options.txt";
+}
+
+void checkBatchOptions(const fs::path& outDir, const std::map<std::string, std::string>& options) {
+  const fs::path path = batchOptionsPath(outDir);
+  std::error_code error;
+  if (!fs::exists(path, error)) return;
+  const std::map<std::string, std::string> recorded = parseBatchOptions(path);
+  if (recorded == options) return;
+  std::map<std::string, std::string> names = recorded;
+  names.insert(options.begin(), options.end());
+  std::string differences;
+  for (const auto& [name, value] : names) {
+    const auto there = recorded.find(name);
+    const auto now = options.find(name);
+    const std::string thereText = there == recorded.end() ? "default" : there->second;
+    const std::string nowText = now == options.end() ? "default" : now->second;
+    if (thereText == nowText) continue;
+    differences += (differences.empty() ? "" : "; ") + ("--" + name) + " " + thereText +
+                   " there, " + nowText + " now";
+  }
+  throwInputError(path, "the outputs in this folder were made with other options (" + differences +
+                            "); give the same options to resume, --redo to run every item "
+                            "again with these, or another --out-dir");
+}
+
 std::vector<std::size_t> shardItems(std::size_t total, const BatchShard& shard) {
   std::vector<std::size_t> items;
   for (std::size_t k = static_cast<std::size_t>(shard.index - 1); k < total;
@@ -272,6 +344,10 @@ std::vector<std::size_t> shardItems(std::size_t total, const BatchShard& shard) 
 BatchRunSummary runBatch(const ClmModel& model, const BatchJob& job, const BatchSettings& settings,
                          const ProgressCallback& progress, const CancelToken* cancel) {
   prepareOutputFolder(job.inputs, job.outDir, job.initDir);
+  const std::map<std::string, std::string> options = batchOptions(job, settings);
+  if (!job.redo) checkBatchOptions(job.outDir, options);
+  // Every shard writes the same text; a rerun with --redo records its new options.
+  writeTextAtomically(batchOptionsPath(job.outDir), formatBatchOptions(options));
   std::error_code error;
   fs::create_directories(job.outDir / "status", error);
   if (error) throwInputError(job.outDir / "status", "cannot create the folder: " + error.message());

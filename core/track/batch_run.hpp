@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,6 +48,20 @@ struct BatchSettings {
   TrackerSettings track;
 };
 
+// The options a batch's outputs depend on, name -> value as given on the command line: the
+// tracker options (core/track/tracker_options) of settings.track that differ from their defaults
+// (`clm3d batch` fits images with their search part), "fov" when settings.image's differs from the
+// default, "init-dir" when the job has one. Threads, shards and --redo change no output and are
+// not among them.
+std::map<std::string, std::string> batchOptions(const BatchJob& job, const BatchSettings& settings);
+// OUT/options.txt: the options the outputs in OUT were made with, one "name=value" a line.
+std::filesystem::path batchOptionsPath(const std::filesystem::path& outDir);
+// Throws InputError naming OUT/options.txt and every option that differs (its value there and
+// now) when the file records other options than `options`: resuming would mix outputs of two
+// settings. Nothing to check when there is no such file (a new folder).
+void checkBatchOptions(const std::filesystem::path& outDir,
+                       const std::map<std::string, std::string>& options);
+
 // One row of the summary: the item as given, its status (ok, no-face for an image without a face,
 // error), frames searched (1 for an image), failed frames (an image without a face, a video's
 // frames the tracker judged failed), seconds spent and the error message.
@@ -81,7 +96,9 @@ struct BatchRunSummary {
   std::filesystem::path summaryCsv;
 };
 
-// Runs the shard's items of the job. Items finished by an earlier run (an ok or no-face status
+// Runs the shard's items of the job. The options (batchOptions) are checked against those the
+// folder's earlier runs recorded (checkBatchOptions; not with job.redo, which runs every item
+// again) and recorded in OUT/options.txt. Items finished by an earlier run (an ok or no-face status
 // file whose output exists) keep their row unless job.redo; others run on job.threads workers.
 // Leftover temporaries of a killed run (OUT/.NAME.tmp*) are removed first. Progress (thread-safe,
 // once per finished item) goes 0..1 over the items to run, its stage

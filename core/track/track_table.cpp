@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <ostream>
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
@@ -13,6 +14,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/scheme/text_scan.hpp"
+#include "core/track/track_table_writer.hpp"
 
 namespace clm3d {
 namespace {
@@ -157,106 +159,132 @@ void checkExtraCell(const std::string& cell, const std::string& column, int fram
   }
 }
 
+// The header line: the tracker's columns, visible_k / conf_k when asked for, the extra columns.
+void appendTrackHeader(std::string& out, int n, bool withVisibility, bool withConfidence,
+                       const std::vector<std::string>& extraColumns) {
+  out += "frame,timestamp,success,confidence,view";
+  for (const char* name : kPoseColumns) out += std::string(",") + name;
+  for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
+  for (int i = 1; i <= n; ++i) out += ",y_" + std::to_string(i);
+  if (withVisibility) {
+    for (int i = 1; i <= n; ++i) out += "," + std::string(kVisiblePrefix) + std::to_string(i);
+  }
+  if (withConfidence) {
+    for (int i = 1; i <= n; ++i) out += "," + std::string(kConfidencePrefix) + std::to_string(i);
+  }
+  for (const auto& name : extraColumns) out += ',' + name;
+  out += '\n';
+}
+
+// One row's line under such a header; Error for a row of the wrong size.
+void appendTrackRow(std::string& out, const TrackRow& row, int n, bool withVisibility,
+                    bool withConfidence, const std::vector<std::string>& extraColumns) {
+  if (row.points.cols() != n) {
+    throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                std::to_string(row.points.cols()) + " points, expected " + std::to_string(n));
+  }
+  if (!row.visibility.empty() && std::cmp_not_equal(row.visibility.size(), n)) {
+    throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                std::to_string(row.visibility.size()) + " visibility flags, expected " +
+                std::to_string(n));
+  }
+  if (!row.landmarkConfidence.empty() && std::cmp_not_equal(row.landmarkConfidence.size(), n)) {
+    throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                std::to_string(row.landmarkConfidence.size()) + " landmark confidences, expected " +
+                std::to_string(n));
+  }
+  out += std::to_string(row.frame);
+  out += ',';
+  appendFixed(out, row.timestamp, 6);
+  out += row.success ? ",1," : ",0,";
+  appendGeneral(out, row.confidence, 9);
+  out += ',' + std::to_string(row.view);
+  if (row.pose) {
+    const auto& pose = *row.pose;
+    const std::array<double, 7> values = {
+        pose.translation.x(), pose.translation.y(), pose.translation.z(), pose.scale,
+        degrees(pose.pitch),  degrees(pose.yaw),    degrees(pose.roll)};
+    for (const double value : values) {
+      out += ',';
+      appendGeneral(out, value, 9);
+    }
+  } else {
+    out += ",,,,,,,";
+  }
+  // A point counts as present only when both coordinates are finite; otherwise both cells are
+  // left empty, so a reader never sees half a point.
+  const auto present = [&](int i) {
+    return std::isfinite(row.points(0, i)) && std::isfinite(row.points(1, i));
+  };
+  for (int axis = 0; axis < 2; ++axis) {
+    for (int i = 0; i < n; ++i) {
+      out += ',';
+      if (present(i)) appendFixed(out, row.points(axis, i), 4);
+    }
+  }
+  if (withVisibility) {
+    for (int i = 0; i < n; ++i) {
+      const Visibility flag = row.visibility.empty() ? Visibility::Unknown
+                                                     : row.visibility[static_cast<std::size_t>(i)];
+      out += flag == Visibility::Visible ? ",1" : flag == Visibility::Hidden ? ",0" : ",";
+    }
+  }
+  if (withConfidence) {
+    for (int i = 0; i < n; ++i) {
+      out += ',';
+      if (!row.landmarkConfidence.empty()) {
+        appendGeneral(out, row.landmarkConfidence[static_cast<std::size_t>(i)], 6);
+      }
+    }
+  }
+  if (row.extraCells.size() > extraColumns.size()) {
+    throw Error("track table: frame " + std::to_string(row.frame) + " has " +
+                std::to_string(row.extraCells.size()) + " extra cells, expected at most " +
+                std::to_string(extraColumns.size()));
+  }
+  for (std::size_t k = 0; k < extraColumns.size(); ++k) {
+    out += ',';
+    if (k < row.extraCells.size()) {
+      checkExtraCell(row.extraCells[k], extraColumns[k], row.frame);
+      out += row.extraCells[k];
+    }
+  }
+  out += '\n';
+}
+
 }  // namespace
 
 std::string formatTrackTable(const TrackTable& table) {
   if (table.landmarkCount < 0) throw Error("track table: negative landmark count");
   const int n = table.landmarkCount;
-  std::string out = "frame,timestamp,success,confidence,view";
-  for (const char* name : kPoseColumns) out += std::string(",") + name;
-  for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
-  for (int i = 1; i <= n; ++i) out += ",y_" + std::to_string(i);
   const bool withVisibility =
       std::any_of(table.rows.begin(), table.rows.end(),
                   [](const TrackRow& row) { return !row.visibility.empty(); });
-  if (withVisibility) {
-    for (int i = 1; i <= n; ++i) out += "," + std::string(kVisiblePrefix) + std::to_string(i);
-  }
   const bool withConfidence =
       std::any_of(table.rows.begin(), table.rows.end(),
                   [](const TrackRow& row) { return !row.landmarkConfidence.empty(); });
-  if (withConfidence) {
-    for (int i = 1; i <= n; ++i) out += "," + std::string(kConfidencePrefix) + std::to_string(i);
-  }
   checkExtraColumns(table);
-  for (const auto& name : table.extraColumns) out += ',' + name;
-  out += '\n';
-
+  std::string out;
+  appendTrackHeader(out, n, withVisibility, withConfidence, table.extraColumns);
   for (const auto& row : table.rows) {
-    if (row.points.cols() != n) {
-      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
-                  std::to_string(row.points.cols()) + " points, expected " + std::to_string(n));
-    }
-    if (!row.visibility.empty() && std::cmp_not_equal(row.visibility.size(), n)) {
-      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
-                  std::to_string(row.visibility.size()) + " visibility flags, expected " +
-                  std::to_string(n));
-    }
-    if (!row.landmarkConfidence.empty() && std::cmp_not_equal(row.landmarkConfidence.size(), n)) {
-      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
-                  std::to_string(row.landmarkConfidence.size()) +
-                  " landmark confidences, expected " + std::to_string(n));
-    }
-    out += std::to_string(row.frame);
-    out += ',';
-    appendFixed(out, row.timestamp, 6);
-    out += row.success ? ",1," : ",0,";
-    appendGeneral(out, row.confidence, 9);
-    out += ',' + std::to_string(row.view);
-    if (row.pose) {
-      const auto& pose = *row.pose;
-      const std::array<double, 7> values = {
-          pose.translation.x(), pose.translation.y(), pose.translation.z(), pose.scale,
-          degrees(pose.pitch),  degrees(pose.yaw),    degrees(pose.roll)};
-      for (const double value : values) {
-        out += ',';
-        appendGeneral(out, value, 9);
-      }
-    } else {
-      out += ",,,,,,,";
-    }
-    // A point counts as present only when both coordinates are finite; otherwise both cells are
-    // left empty, so a reader never sees half a point.
-    const auto present = [&](int i) {
-      return std::isfinite(row.points(0, i)) && std::isfinite(row.points(1, i));
-    };
-    for (int axis = 0; axis < 2; ++axis) {
-      for (int i = 0; i < n; ++i) {
-        out += ',';
-        if (present(i)) appendFixed(out, row.points(axis, i), 4);
-      }
-    }
-    if (withVisibility) {
-      for (int i = 0; i < n; ++i) {
-        const Visibility flag = row.visibility.empty()
-                                    ? Visibility::Unknown
-                                    : row.visibility[static_cast<std::size_t>(i)];
-        out += flag == Visibility::Visible ? ",1" : flag == Visibility::Hidden ? ",0" : ",";
-      }
-    }
-    if (withConfidence) {
-      for (int i = 0; i < n; ++i) {
-        out += ',';
-        if (!row.landmarkConfidence.empty()) {
-          appendGeneral(out, row.landmarkConfidence[static_cast<std::size_t>(i)], 6);
-        }
-      }
-    }
-    if (row.extraCells.size() > table.extraColumns.size()) {
-      throw Error("track table: frame " + std::to_string(row.frame) + " has " +
-                  std::to_string(row.extraCells.size()) + " extra cells, expected at most " +
-                  std::to_string(table.extraColumns.size()));
-    }
-    for (std::size_t k = 0; k < table.extraColumns.size(); ++k) {
-      out += ',';
-      if (k < row.extraCells.size()) {
-        checkExtraCell(row.extraCells[k], table.extraColumns[k], row.frame);
-        out += row.extraCells[k];
-      }
-    }
-    out += '\n';
+    appendTrackRow(out, row, n, withVisibility, withConfidence, table.extraColumns);
   }
   return out;
+}
+
+TrackTableWriter::TrackTableWriter(std::ostream& out, int landmarkCount)
+    : out_(&out), landmarkCount_(landmarkCount) {
+  if (landmarkCount < 0) throw Error("track table: negative landmark count");
+  std::string header;
+  appendTrackHeader(header, landmarkCount_, true, true, {});
+  out_->write(header.data(), static_cast<std::streamsize>(header.size()));
+}
+
+void TrackTableWriter::write(const TrackRow& row) {
+  line_.clear();
+  appendTrackRow(line_, row, landmarkCount_, true, true, {});
+  out_->write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  ++rows_;
 }
 
 void writeTrackTable(const std::filesystem::path& path, const TrackTable& table) {

@@ -265,6 +265,15 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
                                   std::vector<TrackRow>& rows, int expectedFrames,
                                   std::string_view stage, const PerFrame& perFrame,
                                   const ProgressCallback& progress, const CancelToken* cancel) {
+  return trackRemainingFrames(
+      reader, tracker, [&rows](TrackRow&& row) { rows.push_back(std::move(row)); }, expectedFrames,
+      stage, perFrame, progress, cancel);
+}
+
+TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
+                                  int expectedFrames, std::string_view stage,
+                                  const PerFrame& perFrame, const ProgressCallback& progress,
+                                  const CancelToken* cancel) {
   TrackSummary summary;
   cv::Mat frame;
   while (true) {
@@ -276,7 +285,7 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
     if (step.detected) ++summary.detections;
     if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
     if (perFrame) perFrame(frame, step, tracker);
-    rows.push_back(std::move(step.row));
+    onRow(std::move(step.row));
     if (progress && expectedFrames > 0) {
       progress(std::min(1.0, static_cast<double>(summary.frames) / expectedFrames), stage);
     }
@@ -290,14 +299,23 @@ TrackSummary trackVideo(
     TrackTable& table,
     const std::function<void(const cv::Mat&, const TrackStep&, Tracker&)>& perFrame,
     const ProgressCallback& progress, const CancelToken* cancel, std::optional<FitState> initial) {
+  table.landmarkCount = model.shape.pointCount();
+  return trackVideo(
+      video, model, settings, [&table](TrackRow&& row) { table.rows.push_back(std::move(row)); },
+      perFrame, progress, cancel, std::move(initial));
+}
+
+TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& model,
+                        const TrackerSettings& settings, const TrackRowSink& onRow,
+                        const PerFrame& perFrame, const ProgressCallback& progress,
+                        const CancelToken* cancel, std::optional<FitState> initial) {
   VideoReader reader(video);
   const Camera camera =
       Camera::fromVerticalFov(reader.width(), reader.height(), kDefaultVerticalFovDeg);
   Tracker tracker(model, camera, settings);
   if (initial) tracker.setState(*initial);
-  table.landmarkCount = model.shape.pointCount();
-  return trackRemainingFrames(reader, tracker, table.rows, reader.frameCount(), "tracking",
-                              perFrame, progress, cancel);
+  return trackRemainingFrames(reader, tracker, onRow, reader.frameCount(), "tracking", perFrame,
+                              progress, cancel);
 }
 
 }  // namespace clm3d

@@ -162,6 +162,12 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
                                   std::vector<TrackRow>& rows, int expectedFrames,
                                   std::string_view stage, const PerFrame& perFrame,
                                   const ProgressCallback& progress, const CancelToken* cancel);
+// The same, handing each row to `onRow` as it is made instead of keeping it.
+using TrackRowSink = std::function<void(TrackRow&&)>;
+TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
+                                  int expectedFrames, std::string_view stage,
+                                  const PerFrame& perFrame, const ProgressCallback& progress,
+                                  const CancelToken* cancel);
 
 // Tracks every frame of a video into `table` (rows in frame order). perFrame (optional) sees each
 // frame with its step, e.g. to draw the overlay. Progress stage "tracking". Throws InputError for
@@ -172,5 +178,12 @@ TrackSummary trackVideo(
     const std::function<void(const cv::Mat&, const TrackStep&, Tracker&)>& perFrame = {},
     const ProgressCallback& progress = {}, const CancelToken* cancel = nullptr,
     std::optional<FitState> initial = std::nullopt);
+// The same, handing each row (frame order; the model's point count) to `onRow` as it is made, so
+// that nothing grows with the video's length (a TrackTableWriter streams them to a file).
+TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& model,
+                        const TrackerSettings& settings, const TrackRowSink& onRow,
+                        const PerFrame& perFrame = {}, const ProgressCallback& progress = {},
+                        const CancelToken* cancel = nullptr,
+                        std::optional<FitState> initial = std::nullopt);
 
 }  // namespace clm3d

@@ -2,7 +2,8 @@
 // a broken video and a broken image (error rows with their messages, the rest done, exit 1), the
 // same outputs on one and on two threads, three shards merged into the whole run's summary, a run
 // killed with SIGKILL half-way that a rerun finishes without redoing finished items or leaving a
-// half-written file, and the usage errors.
+// half-written file, the track options reaching the videos and a rerun with other options refused,
+// and the usage errors.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -23,10 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::runClm3d;
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 struct Files {
   test::TempDir dir;
@@ -71,7 +68,7 @@ TEST(BatchCli, BadItemsAreRowsWithTheirMessageAndTheRestIsDone) {
     EXPECT_EQ(fs::path(rows[i].item).filename().string(), expected[i].first);
     EXPECT_EQ(rows[i].status, expected[i].second) << rows[i].item << ": " << rows[i].error;
     if (expected[i].second == ImageFitStatus::Error) {
-      EXPECT_TRUE(contains(rows[i].error, expected[i].first)) << rows[i].error;
+      EXPECT_TRUE(test::contains(rows[i].error, expected[i].first)) << rows[i].error;
     }
   }
   EXPECT_EQ(rows[0].frames, 1);
@@ -92,9 +89,9 @@ TEST(BatchCli, TwoThreadsWriteTheSameOutputsAsOneAndShowProgress) {
   const fs::path out = files().dir / "two-threads";
   const auto result = runClm3d(files().batch(out, "--threads 2"));
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "batch 7/7 ")) << result.output;
-  EXPECT_TRUE(contains(result.output, ", ETA 0:00")) << result.output;
-  EXPECT_TRUE(contains(result.output, "2 of 7 items failed")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "batch 7/7 ")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, ", ETA 0:00")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "2 of 7 items failed")) << result.output;
   EXPECT_EQ(test::batchOutputsIn(out), test::batchOutputsIn(wholeRun()));
   const auto one = summaryOf(wholeRun() / "summary.csv");
   const auto two = summaryOf(out / "summary.csv");
@@ -120,7 +117,7 @@ TEST(BatchCli, ThreeShardsCoverEveryItemOnceAndMergeIntoTheWholeRun) {
   EXPECT_EQ(summaryOf(out / "summary-3-of-3.csv").size(), 2U);  // items 3, 6
   const auto merge = runClm3d("batch merge --out-dir " + out.string());
   EXPECT_EQ(merge.exitCode, 1) << merge.output;
-  EXPECT_TRUE(contains(merge.output, "merged 3 shard summaries")) << merge.output;
+  EXPECT_TRUE(test::contains(merge.output, "merged 3 shard summaries")) << merge.output;
   const auto whole = summaryOf(wholeRun() / "summary.csv");
   const auto merged = summaryOf(out / "summary.csv");
   ASSERT_EQ(merged.size(), whole.size());
@@ -136,7 +133,7 @@ TEST(BatchCli, ThreeShardsCoverEveryItemOnceAndMergeIntoTheWholeRun) {
   fs::remove(out / "summary-2-of-3.csv");
   const auto missing = runClm3d("batch merge --out-dir " + out.string());
   EXPECT_EQ(missing.exitCode, 1);
-  EXPECT_TRUE(contains(missing.output, "summary-2-of-3.csv: missing")) << missing.output;
+  EXPECT_TRUE(test::contains(missing.output, "summary-2-of-3.csv: missing")) << missing.output;
 }
 
 TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
@@ -158,7 +155,7 @@ TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
       "bash -c '" + command + " & pid=$!; for i in $(seq 1200); do n=$(ls " + out.string() +
       "/status 2>/dev/null | grep -c done$); [ \"$n\" -ge 3 ] && break; sleep 0.05; done; "
       "kill -KILL $pid; wait $pid; echo exit=$?'");
-  ASSERT_TRUE(contains(killed.output, "exit=137")) << killed.output;
+  ASSERT_TRUE(test::contains(killed.output, "exit=137")) << killed.output;
   std::map<std::string, fs::file_time_type> before;
   for (const auto& entry : fs::directory_iterator(out / "status")) {
     const std::string name = entry.path().filename().string();
@@ -172,14 +169,14 @@ TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
 
   const auto rerun = test::runCommand(command);
   ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
-  EXPECT_TRUE(contains(rerun.output, std::to_string(before.size()) + " finished before"))
+  EXPECT_TRUE(test::contains(rerun.output, std::to_string(before.size()) + " finished before"))
       << rerun.output;
   for (const auto& [output, time] : before) {
     EXPECT_EQ(fs::last_write_time(output), time) << output << " was written again";
   }
   // Every output complete, no temporary left behind, and the same as an uninterrupted run's.
   for (const auto& entry : fs::recursive_directory_iterator(out)) {
-    EXPECT_FALSE(contains(entry.path().filename().string(), ".tmp")) << entry.path();
+    EXPECT_FALSE(test::contains(entry.path().filename().string(), ".tmp")) << entry.path();
   }
   const auto rows = summaryOf(out / "summary.csv");
   ASSERT_EQ(rows.size(), 11U);
@@ -191,7 +188,7 @@ TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
   // --redo runs everything again.
   const auto redo = test::runCommand(command + " --redo");
   ASSERT_EQ(redo.exitCode, 0) << redo.output;
-  EXPECT_TRUE(contains(redo.output, "11 items run")) << redo.output;
+  EXPECT_TRUE(test::contains(redo.output, "11 items run")) << redo.output;
 }
 
 TEST(BatchCli, UsageErrorsAndMissingInputs) {
@@ -209,10 +206,55 @@ TEST(BatchCli, UsageErrorsAndMissingInputs) {
   ASSERT_EQ(rows.size(), 2U);
   EXPECT_EQ(rows[0].status, ImageFitStatus::Ok);
   EXPECT_EQ(rows[1].status, ImageFitStatus::Error);
-  EXPECT_TRUE(contains(rows[1].error, "missing.png")) << rows[1].error;
+  EXPECT_TRUE(test::contains(rows[1].error, "missing.png")) << rows[1].error;
   const auto noShards = runClm3d("batch merge --out-dir " + (f.dir / "list-out").string());
   EXPECT_EQ(noShards.exitCode, 1);
-  EXPECT_TRUE(contains(noShards.output, "no shard summary")) << noShards.output;
+  EXPECT_TRUE(test::contains(noShards.output, "no shard summary")) << noShards.output;
+}
+
+// Videos are tracked with the options of `clm3d track` (and streamed to the same CSV bytes as
+// writeTrackTable's); the options are recorded beside the outputs, a rerun with other options is
+// refused, with the same ones it resumes, --redo takes new ones.
+TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
+  const Files& f = files();
+  const fs::path video = f.made.inputs / "d-left.avi";
+  const fs::path job = f.dir / "one-video.txt";
+  test::writeFile(job, video.string() + "\n");
+  const fs::path out = f.dir / "options";
+  const std::string batch = "batch --model " + f.made.model.string() + " --input " + job.string() +
+                            " --out-dir " + out.string();
+  const std::string options = " --smooth --smooth-min-cutoff 0.05 --motion-prediction 0.5";
+
+  const auto first = runClm3d(batch + options);
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  const auto track =
+      runClm3d("track --quiet --model " + f.made.model.string() + " --video " + video.string() +
+               " --out " + (f.dir / "tracked.csv").string() + options);
+  ASSERT_EQ(track.exitCode, 0) << track.output;
+  EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(f.dir / "tracked.csv"));
+  // Both stream their rows (TrackTableWriter); the bytes are those of writeTrackTable.
+  EXPECT_EQ(test::readFile(out / "d-left.csv"),
+            formatTrackTable(readTrackTable(out / "d-left.csv")));
+  EXPECT_NE(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"))
+      << "the options changed nothing";
+  const std::string recorded = test::readFile(out / "options.txt");
+  EXPECT_TRUE(test::contains(recorded, "\nsmooth=true\n")) << recorded;
+  EXPECT_TRUE(test::contains(recorded, "\nmotion-prediction=0.5\n")) << recorded;
+
+  const auto other = runClm3d(batch + " --smooth");
+  EXPECT_EQ(other.exitCode, 1) << other.output;
+  EXPECT_TRUE(test::contains(other.output, "options.txt")) << other.output;
+  EXPECT_TRUE(test::contains(other.output, "--motion-prediction 0.5 there, default now")) << other.output;
+
+  const auto same = runClm3d(batch + options);
+  EXPECT_EQ(same.exitCode, 0) << same.output;
+  EXPECT_TRUE(test::contains(same.output, "0 items run")) << same.output;
+  EXPECT_TRUE(test::contains(same.output, "1 finished before")) << same.output;
+
+  const auto redo = runClm3d(batch + " --redo");
+  EXPECT_EQ(redo.exitCode, 0) << redo.output;
+  EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"));
+  EXPECT_FALSE(test::contains(test::readFile(out / "options.txt"), "smooth")) << "not recorded again";
 }
 
 }  // namespace

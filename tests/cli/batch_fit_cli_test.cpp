@@ -21,10 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::runClm3d;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> result;
   std::istringstream in(text);
@@ -83,24 +79,24 @@ TEST(BatchFitCli, FolderWithAnUnreadableImageGivesAnErrorRowAndExitsOne) {
                                f.images.string() + " --out-dir " + out.string());
   EXPECT_EQ(result.exitCode, 1) << result.output;
   // Progress per image on stderr, the broken image named in the final message.
-  EXPECT_TRUE(contains(result.output, "fit 1/4 a-turned.png ")) << result.output;
-  EXPECT_TRUE(contains(result.output, "fit 4/4 d-broken.jpg error")) << result.output;
-  EXPECT_TRUE(contains(result.output, "1 of 4 images could not be fitted")) << result.output;
-  EXPECT_TRUE(contains(result.output, "d-broken.jpg")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "fit 1/4 a-turned.png ")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "fit 4/4 d-broken.jpg error")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "1 of 4 images could not be fitted")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "d-broken.jpg")) << result.output;
 
   const auto rows = lines(test::readFile(out / "summary.csv"));
   ASSERT_EQ(rows.size(), 5U) << test::readFile(out / "summary.csv");
   EXPECT_EQ(rows[0],
             "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,iterations,converged,"
             "error");
-  EXPECT_TRUE(contains(rows[1], "a-turned.png,ok,")) << rows[1];
-  EXPECT_TRUE(contains(rows[2], "b-frontal.jpg,ok,")) << rows[2];
-  EXPECT_TRUE(contains(rows[3], "c-blank.png,no-face,")) << rows[3];
-  EXPECT_TRUE(contains(rows[3], "no face found")) << rows[3];
-  EXPECT_TRUE(contains(rows[4], "d-broken.jpg,error,,,,,,,,")) << rows[4];
-  EXPECT_TRUE(contains(rows[4], "d-broken.jpg")) << rows[4];
+  EXPECT_TRUE(test::contains(rows[1], "a-turned.png,ok,")) << rows[1];
+  EXPECT_TRUE(test::contains(rows[2], "b-frontal.jpg,ok,")) << rows[2];
+  EXPECT_TRUE(test::contains(rows[3], "c-blank.png,no-face,")) << rows[3];
+  EXPECT_TRUE(test::contains(rows[3], "no face found")) << rows[3];
+  EXPECT_TRUE(test::contains(rows[4], "d-broken.jpg,error,,,,,,,,")) << rows[4];
+  EXPECT_TRUE(test::contains(rows[4], "d-broken.jpg")) << rows[4];
   // An ok row has fit and detection times and 25 points written beside the summary.
-  EXPECT_FALSE(contains(rows[1], "ok,,")) << rows[1];
+  EXPECT_FALSE(test::contains(rows[1], "ok,,")) << rows[1];
   EXPECT_LT(errorOf(out / "a-turned.pts", f.turned), 0.12);
   EXPECT_LT(errorOf(out / "b-frontal.pts", f.frontal), 0.12);
   EXPECT_EQ(readLandmarks(out / "a-turned.pts").size(), 25);
@@ -117,11 +113,11 @@ TEST(BatchFitCli, ListFileWithCommentsRelativePathsAndStartPoints) {
   const auto result = runClm3d("fit --model " + f.model.string() + " --images " + list.string() +
                                " --init-dir " + f.starts.string() + " --out-dir " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "fitted 2 of 2 images")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "fitted 2 of 2 images")) << result.output;
   const auto rows = lines(test::readFile(out / "summary.csv"));
   ASSERT_EQ(rows.size(), 3U);
   // Started from points: no detection time.
-  EXPECT_TRUE(contains(rows[1], "a-turned.png,ok,")) << rows[1];
+  EXPECT_TRUE(test::contains(rows[1], "a-turned.png,ok,")) << rows[1];
   std::istringstream cells(rows[1]);
   std::vector<std::string> values;
   for (std::string cell; std::getline(cells, cell, ',');) values.push_back(cell);
@@ -141,10 +137,10 @@ TEST(BatchFitCli, AnImageWithoutStartPointsInTheInitFolderIsAnErrorRow) {
       runClm3d("fit --quiet --model " + f.model.string() + " --images " + list.string() +
                " --init-dir " + f.starts.string() + " --out-dir " + out.string());
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_FALSE(contains(result.output, "fit 1/2")) << result.output;  // --quiet
+  EXPECT_FALSE(test::contains(result.output, "fit 1/2")) << result.output;  // --quiet
   const std::string summary = test::readFile(out / "summary.csv");
-  EXPECT_TRUE(contains(summary, "c-blank.png,error,")) << summary;
-  EXPECT_TRUE(contains(summary, "no start points c-blank.pts")) << summary;
+  EXPECT_TRUE(test::contains(summary, "c-blank.png,error,")) << summary;
+  EXPECT_TRUE(test::contains(summary, "no start points c-blank.pts")) << summary;
 }
 
 TEST(BatchFitCli, ModesAreMutuallyExclusiveAndBadFoldersNameThemselves) {
@@ -155,10 +151,10 @@ TEST(BatchFitCli, ModesAreMutuallyExclusiveAndBadFoldersNameThemselves) {
   EXPECT_EQ(both.exitCode, 2) << both.output;
   const auto neither = runClm3d("fit" + model + " --out x.pts");
   EXPECT_EQ(neither.exitCode, 2) << neither.output;
-  EXPECT_TRUE(contains(neither.output, "--images")) << neither.output;
+  EXPECT_TRUE(test::contains(neither.output, "--images")) << neither.output;
   const auto noOutDir = runClm3d("fit" + model + " --images " + f.images.string());
   EXPECT_EQ(noOutDir.exitCode, 2) << noOutDir.output;
-  EXPECT_TRUE(contains(noOutDir.output, "--out-dir")) << noOutDir.output;
+  EXPECT_TRUE(test::contains(noOutDir.output, "--out-dir")) << noOutDir.output;
   const auto outWithImages =
       runClm3d("fit" + model + " --images " + f.images.string() + " --out-dir o --out x.pts");
   EXPECT_EQ(outWithImages.exitCode, 2) << outWithImages.output;
@@ -166,19 +162,20 @@ TEST(BatchFitCli, ModesAreMutuallyExclusiveAndBadFoldersNameThemselves) {
   const auto missing = runClm3d("fit" + model + " --images " + absent.string() + " --out-dir " +
                                 (f.dir / "o").string());
   EXPECT_EQ(missing.exitCode, 1) << missing.output;
-  EXPECT_TRUE(contains(missing.output, absent.string())) << missing.output;
+  EXPECT_TRUE(test::contains(missing.output, absent.string())) << missing.output;
   // Fits written beside the images would overwrite their mark-ups.
   const auto sameFolder = runClm3d("fit" + model + " --images " + f.images.string() +
                                    " --out-dir " + f.images.string());
   EXPECT_EQ(sameFolder.exitCode, 1) << sameFolder.output;
-  EXPECT_TRUE(contains(sameFolder.output, "is the folder of the images")) << sameFolder.output;
+  EXPECT_TRUE(test::contains(sameFolder.output, "is the folder of the images"))
+      << sameFolder.output;
   EXPECT_FALSE(fs::exists(f.images / "summary.csv"));
   const fs::path empty = f.dir / "empty-list.txt";
   test::writeFile(empty, "# nothing\n\n");
   const auto none = runClm3d("fit" + model + " --images " + empty.string() + " --out-dir " +
                              (f.dir / "o").string());
   EXPECT_EQ(none.exitCode, 1) << none.output;
-  EXPECT_TRUE(contains(none.output, "empty-list.txt")) << none.output;
+  EXPECT_TRUE(test::contains(none.output, "empty-list.txt")) << none.output;
 }
 
 }  // namespace

@@ -18,10 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::runClm3d;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // A 25-point truth with eye centres (points 8 and 11) 40 pixels apart.
 std::string truth25() {
   std::string text = "version: 1\nn_points: 25\n{\n";
@@ -39,7 +35,7 @@ TEST(DetectCli, CountsAnImageWithoutAFaceAndWritesJson) {
   const auto result = runClm3d("detect --images " + dir.path().string() +
                                " --detector cascade --calibrate --quiet --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "cascade | 1 | 0 | 1 | 0 |")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "cascade | 1 | 0 | 1 | 0 |")) << result.output;
   const nlohmann::json report = nlohmann::json::parse(test::readFile(out));
   ASSERT_EQ(report["detectors"].size(), 1u);
   EXPECT_EQ(report["detectors"][0]["no_face"], 1);
@@ -51,15 +47,15 @@ TEST(DetectCli, ErrorsNameTheFile) {
   cv::imwrite((dir / "lonely.png").string(), cv::Mat(100, 100, CV_8UC3, cv::Scalar(0, 0, 0)));
   auto result = runClm3d("detect --images " + dir.path().string() + " --detector cascade");
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "lonely.png")) << result.output;
-  EXPECT_TRUE(contains(result.output, "no truth")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "lonely.png")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "no truth")) << result.output;
 
   fs::remove(dir / "lonely.png");
   test::writeFile(dir / "broken.png", "not an image");
   test::writeFile(dir / "broken.pts", truth25());
   result = runClm3d("detect --images " + dir.path().string() + " --detector cascade --quiet");
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "broken.png")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "broken.png")) << result.output;
 
   // Usage: the start error needs a model; an unknown detector is bad input.
   result = runClm3d("detect --images " + dir.path().string() + " --start-error");
@@ -68,7 +64,7 @@ TEST(DetectCli, ErrorsNameTheFile) {
   EXPECT_EQ(result.exitCode, 2) << result.output;
   result = runClm3d("detect --images " + dir.path().string() + " --detector hog");
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "hog")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "hog")) << result.output;
 }
 
 TEST(DetectCli, LfpwPhotosWhenPresent) {
@@ -86,7 +82,8 @@ TEST(DetectCli, LfpwPhotosWhenPresent) {
   const auto result = runClm3d("detect --images " + (dir / "list.txt").string() +
                                " --detector all --min-face 80 --calibrate --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "detect 3/3 image_0004.jpg")) << result.output;  // progress
+  EXPECT_TRUE(test::contains(result.output, "detect 3/3 image_0004.jpg"))
+      << result.output;  // progress
   const nlohmann::json report = nlohmann::json::parse(test::readFile(out));
   for (const auto& detector : report["detectors"]) {
     EXPECT_EQ(detector["images"], 3);

@@ -19,10 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::runClm3d;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // The thesis25 points of a 68-point mark-up whose eye centres are 40 pixels apart, moved by dx.
 LandmarkSet shifted(const LandmarkSet& points, double dx) {
   LandmarkSet moved = points;
@@ -71,16 +67,18 @@ TEST(EvalPointsFolderCli, PairsByStemCountsMissingPredictionsAndWritesTheTable) 
                                f.methodA.string() + " --pred-dir " + f.methodB.string() +
                                " --csv " + csv.string() + " --out " + report.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "(3 images, scheme thesis25, all points)")) << result.output;
-  EXPECT_TRUE(contains(result.output,
-                       "fits-a (" + f.methodA.string() +
-                           "): mean error 0.1500, median 0.1500 over 2/3 images; within 0.18: "
-                           "23/69 points (33.3%); missing predictions: 1"))
+  EXPECT_TRUE(test::contains(result.output, "(3 images, scheme thesis25, all points)"))
       << result.output;
-  EXPECT_TRUE(contains(result.output, "fits-b (" + f.methodB.string() +
-                                          "): mean error 0.0500, median 0.0500 over 3/3 images; "
-                                          "within 0.18: 69/69 points (100.0%); missing "
-                                          "predictions: 0"))
+  EXPECT_TRUE(test::contains(
+      result.output, "fits-a (" + f.methodA.string() +
+                         "): mean error 0.1500, median 0.1500 over 2/3 images; within 0.18: "
+                         "23/69 points (33.3%); missing predictions: 1"))
+      << result.output;
+  EXPECT_TRUE(
+      test::contains(result.output, "fits-b (" + f.methodB.string() +
+                                        "): mean error 0.0500, median 0.0500 over 3/3 images; "
+                                        "within 0.18: 69/69 points (100.0%); missing "
+                                        "predictions: 0"))
       << result.output;
 
   const std::string table = test::readFile(csv);
@@ -91,11 +89,13 @@ TEST(EvalPointsFolderCli, PairsByStemCountsMissingPredictionsAndWritesTheTable) 
   EXPECT_EQ(rows[0],
             "image,method,status,error,max_error,true_points,scored_points,found_points,"
             "inter_ocular,prediction");
-  EXPECT_TRUE(contains(rows[1], "img1,fits-a,ok,0.100000,0.100000,23,23,23,40.000,")) << rows[1];
-  EXPECT_TRUE(contains(rows[3], "img2,fits-a,ok,0.200000,0.200000,23,23,0,40.000,")) << rows[3];
+  EXPECT_TRUE(test::contains(rows[1], "img1,fits-a,ok,0.100000,0.100000,23,23,23,40.000,"))
+      << rows[1];
+  EXPECT_TRUE(test::contains(rows[3], "img2,fits-a,ok,0.200000,0.200000,23,23,0,40.000,"))
+      << rows[3];
   EXPECT_EQ(rows[5], "img3,fits-a,missing,,,23,,,,");
-  EXPECT_TRUE(contains(rows[6], "img3,fits-b,ok,0.050000,")) << rows[6];
-  EXPECT_TRUE(contains(rows[6], "img3.ljson")) << rows[6];
+  EXPECT_TRUE(test::contains(rows[6], "img3,fits-b,ok,0.050000,")) << rows[6];
+  EXPECT_TRUE(test::contains(rows[6], "img3.ljson")) << rows[6];
 
   const auto json = nlohmann::json::parse(test::readFile(report));
   EXPECT_EQ(json["format"], "clm3d-point-folder-evaluation");
@@ -131,14 +131,14 @@ TEST(EvalPointsFolderCli, BadInputNamesTheFileAndMixedModesAreUsageErrors) {
   const auto wrongCount =
       runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + bad.string());
   EXPECT_EQ(wrongCount.exitCode, 1) << wrongCount.output;
-  EXPECT_TRUE(contains(wrongCount.output, (bad / "img2.pts").string())) << wrongCount.output;
-  EXPECT_TRUE(contains(wrongCount.output, "10 points")) << wrongCount.output;
+  EXPECT_TRUE(test::contains(wrongCount.output, (bad / "img2.pts").string())) << wrongCount.output;
+  EXPECT_TRUE(test::contains(wrongCount.output, "10 points")) << wrongCount.output;
 
   const fs::path absent = f.dir / "absent";
   const auto missing =
       runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + absent.string());
   EXPECT_EQ(missing.exitCode, 1) << missing.output;
-  EXPECT_TRUE(contains(missing.output, absent.string())) << missing.output;
+  EXPECT_TRUE(test::contains(missing.output, absent.string())) << missing.output;
 
   const auto mixed = runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() +
                               " --pred-dir " + f.methodA.string());
@@ -151,12 +151,12 @@ TEST(EvalPointsFolderCli, BadInputNamesTheFileAndMixedModesAreUsageErrors) {
       runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() + " --pred " +
                (f.methodA / "img1.pts").string() + " --csv x.csv");
   EXPECT_EQ(csvWithFiles.exitCode, 2) << csvWithFiles.output;
-  EXPECT_TRUE(contains(csvWithFiles.output, "--csv")) << csvWithFiles.output;
+  EXPECT_TRUE(test::contains(csvWithFiles.output, "--csv")) << csvWithFiles.output;
   // The single-file mode is unchanged.
   const auto single = runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() +
                                " --pred " + (f.methodA / "img1.pts").string());
   ASSERT_EQ(single.exitCode, 0) << single.output;
-  EXPECT_TRUE(contains(single.output, "error 0.1000 over 23/23 points")) << single.output;
+  EXPECT_TRUE(test::contains(single.output, "error 0.1000 over 23/23 points")) << single.output;
 }
 
 TEST(EvalPointsFolderCli, LfpwTruthAgainstItselfScoresZero) {

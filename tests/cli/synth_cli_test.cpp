@@ -21,17 +21,13 @@ namespace fs = std::filesystem;
 const std::string kSmall =
     " --texture-size 256 --face-step 2 --size 160x120 --face-size 30 --supersample 1";
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 TEST(SynthCli, HeadSeedWritesVideoTruthVisibilityAndDescription) {
   const test::TempDir dir;
   const fs::path out = dir / "seq";
   const auto result =
       test::runClm3d("synth --head-seed 3 --yaw-range 0:4 --out " + out.string() + kSmall);
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "5 frames 160x120")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "5 frames 160x120")) << result.output;
   for (const char* name : {"sequence.avi", "truth.csv", "truth-visibility.csv", "sequence.json"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
@@ -43,8 +39,8 @@ TEST(SynthCli, HeadSeedWritesVideoTruthVisibilityAndDescription) {
   EXPECT_NEAR(degrees(truth.rows[4].pose->yaw), 4.0, 1e-6);
   EXPECT_EQ(readVisibilityTable(out / "truth-visibility.csv").size(), 5U);
   const std::string json = test::readFile(out / "sequence.json");
-  EXPECT_TRUE(contains(json, "\"seed\": 3")) << json;
-  EXPECT_TRUE(contains(json, "\"expression\": \"neutral\"")) << json;
+  EXPECT_TRUE(test::contains(json, "\"seed\": 3")) << json;
+  EXPECT_TRUE(test::contains(json, "\"expression\": \"neutral\"")) << json;
 }
 
 TEST(SynthCli, ScanFromSynthHeadWithNegativeRangeAndMp4) {
@@ -66,8 +62,8 @@ TEST(SynthCli, ScanFromSynthHeadWithNegativeRangeAndMp4) {
   const auto& frontal = truth.rows[1];
   EXPECT_NEAR((frontal.points.col(7) - frontal.points.col(10)).norm(), 30.0, 0.1);
   const std::string json = test::readFile(out / "sequence.json");
-  EXPECT_TRUE(contains(json, "\"kind\": \"scan\"")) << json;
-  EXPECT_TRUE(contains(json, "head-4.obj")) << json;
+  EXPECT_TRUE(test::contains(json, "\"kind\": \"scan\"")) << json;
+  EXPECT_TRUE(test::contains(json, "head-4.obj")) << json;
 }
 
 // --scale turns file units into millimetres as a manifest's scans[i].scale does (core's
@@ -93,13 +89,13 @@ TEST(SynthCli, ScaleMultipliesTheScanAsTrainingDoes) {
   ASSERT_TRUE(one.rows[0].pose && two.rows[0].pose);
   EXPECT_NEAR(two.rows[0].pose->translation.z() / one.rows[0].pose->translation.z(), 2.0, 1e-3);
   EXPECT_NEAR((two.rows[0].points - one.rows[0].points).cwiseAbs().maxCoeff(), 0.0, 0.05);
-  EXPECT_TRUE(contains(test::readFile(dir / "two" / "sequence.json"), "\"scale\": 2"));
-  EXPECT_FALSE(contains(test::readFile(dir / "one" / "sequence.json"), "\"scale\""));
+  EXPECT_TRUE(test::contains(test::readFile(dir / "two" / "sequence.json"), "\"scale\": 2"));
+  EXPECT_FALSE(test::contains(test::readFile(dir / "one" / "sequence.json"), "\"scale\""));
   const auto bad = test::runClm3d("synth --mesh " + (dir / "head-5.obj").string() +
                                   " --landmarks " + (dir / "head-5.ljson").string() +
                                   " --scale 0 --out " + (dir / "bad").string());
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
-  EXPECT_TRUE(contains(bad.output, "--scale")) << bad.output;
+  EXPECT_TRUE(test::contains(bad.output, "--scale")) << bad.output;
 }
 
 TEST(SynthCli, BadYawRangeIsAUsageErrorNamingTheOption) {
@@ -108,8 +104,8 @@ TEST(SynthCli, BadYawRangeIsAUsageErrorNamingTheOption) {
     const auto result = test::runClm3d("synth --head-seed 1 --yaw-range " + std::string(range) +
                                        " --out " + dir.path().string());
     EXPECT_EQ(result.exitCode, 2) << range << ": " << result.output;
-    EXPECT_TRUE(contains(result.output, "--yaw-range")) << result.output;
-    EXPECT_TRUE(contains(result.output, range)) << result.output;
+    EXPECT_TRUE(test::contains(result.output, "--yaw-range")) << result.output;
+    EXPECT_TRUE(test::contains(result.output, range)) << result.output;
   }
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
@@ -122,7 +118,7 @@ TEST(SynthCli, MissingMeshExitsOneNamingTheFile) {
                                      test::fixturePath("james/james.thesis25.ljson").string() +
                                      " --out " + (dir / "seq").string());
   EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, mesh.string())) << result.output;
+  EXPECT_TRUE(test::contains(result.output, mesh.string())) << result.output;
   EXPECT_FALSE(fs::exists(dir / "seq"));
 }
 
@@ -131,19 +127,19 @@ TEST(SynthCli, ConflictingOrMissingSubjectOptionsAreUsageErrors) {
   const std::string out = " --out " + (dir / "seq").string();
   const auto none = test::runClm3d("synth" + out);
   EXPECT_EQ(none.exitCode, 2) << none.output;
-  EXPECT_TRUE(contains(none.output, "--head-seed")) << none.output;
+  EXPECT_TRUE(test::contains(none.output, "--head-seed")) << none.output;
   const auto both = test::runClm3d("synth --head-seed 1 --mesh a.obj --landmarks a.ljson" + out);
   EXPECT_EQ(both.exitCode, 2) << both.output;
   const auto expression =
       test::runClm3d("synth --mesh a.obj --landmarks a.ljson --expression smile" + out);
   EXPECT_EQ(expression.exitCode, 2) << expression.output;
-  EXPECT_TRUE(contains(expression.output, "--expression")) << expression.output;
+  EXPECT_TRUE(test::contains(expression.output, "--expression")) << expression.output;
   const auto size = test::runClm3d("synth --head-seed 1 --size 641x480" + out);
   EXPECT_EQ(size.exitCode, 2) << size.output;
-  EXPECT_TRUE(contains(size.output, "even")) << size.output;
+  EXPECT_TRUE(test::contains(size.output, "even")) << size.output;
   const auto unknown = test::runClm3d("synth --head-seed 1 --expression grin" + out + kSmall);
   EXPECT_EQ(unknown.exitCode, 1) << unknown.output;
-  EXPECT_TRUE(contains(unknown.output, "grin")) << unknown.output;
+  EXPECT_TRUE(test::contains(unknown.output, "grin")) << unknown.output;
   EXPECT_FALSE(fs::exists(dir / "seq"));
 }
 

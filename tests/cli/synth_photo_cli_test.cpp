@@ -25,10 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::runClm3d;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // A 322x242 photo (odd-sized crops are common; the frames become 322x242) of the held-out head at
 // yaw 10 over mid-grey, its projected points, and a red 5x5 marker centred at `marker`.
 struct PhotoFiles {
@@ -76,7 +72,7 @@ TEST(SynthPhotoCli, TruthIsTheAffineOfThePointsAndTheMarkerMovesWithIt) {
   const auto result = runClm3d("synth --photo " + f.photo.string() + " --landmarks " +
                                f.points.string() + " --frames 40 --seed 7 --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "40 frames 322x242")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "40 frames 322x242")) << result.output;
   const TrackTable truth = readTrackTable(out / "truth.csv");
   ASSERT_EQ(truth.rows.size(), 40U);
   ASSERT_EQ(truth.landmarkCount, 25);
@@ -160,18 +156,18 @@ TEST(SynthPhotoCli, A68PointFileKeepsThePointsWithAFixedCounterpart) {
   const auto result = runClm3d("synth --photo " + f.photo.string() + " --landmarks " +
                                pts.string() + " --frames 3 --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "points 19/25")) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "points 19/25")) << result.output;
   const TrackTable truth = readTrackTable(out / "truth.csv");
   ASSERT_EQ(truth.rows.size(), 3U);
   for (const TrackRow& row : truth.rows) {
-    EXPECT_TRUE(std::isnan(row.points(0, 18)));  // point 19, left earlobe
-    EXPECT_TRUE(std::isnan(row.points(0, 24)));  // point 25, right earlobe
+    EXPECT_TRUE(std::isnan(row.points(0, 18)));   // point 19, left earlobe
+    EXPECT_TRUE(std::isnan(row.points(0, 24)));   // point 25, right earlobe
     EXPECT_TRUE(std::isnan(row.points(0, 19)));   // point 20, left cheek: the jaw contour's
     EXPECT_TRUE(std::isnan(row.points(0, 22)));   // point 23, right chin side
     EXPECT_FALSE(std::isnan(row.points(0, 21)));  // point 22, chin centre: iBUG point 8
   }
   // Empty cells, as the tracks CSV writes a missing point.
-  EXPECT_TRUE(contains(test::readFile(out / "truth.csv"), ",,"))
+  EXPECT_TRUE(test::contains(test::readFile(out / "truth.csv"), ",,"))
       << test::readFile(out / "truth.csv");
 }
 
@@ -181,7 +177,7 @@ TEST(SynthPhotoCli, BadLandmarkFilesExitOneNamingTheFile) {
   const auto missing = runClm3d("synth --photo " + f.photo.string() + " --landmarks " +
                                 absent.string() + " --out " + (f.dir / "x").string());
   EXPECT_EQ(missing.exitCode, 1) << missing.output;
-  EXPECT_TRUE(contains(missing.output, absent.string())) << missing.output;
+  EXPECT_TRUE(test::contains(missing.output, absent.string())) << missing.output;
 
   const fs::path wrong = f.dir / "ten.pts";
   std::string ten = "version: 1\nn_points: 10\n{\n";
@@ -191,14 +187,14 @@ TEST(SynthPhotoCli, BadLandmarkFilesExitOneNamingTheFile) {
   const auto count = runClm3d("synth --photo " + f.photo.string() + " --landmarks " +
                               wrong.string() + " --out " + (f.dir / "x").string());
   EXPECT_EQ(count.exitCode, 1) << count.output;
-  EXPECT_TRUE(contains(count.output, wrong.string())) << count.output;
-  EXPECT_TRUE(contains(count.output, "10 points")) << count.output;
+  EXPECT_TRUE(test::contains(count.output, wrong.string())) << count.output;
+  EXPECT_TRUE(test::contains(count.output, "10 points")) << count.output;
 
   const fs::path noPhoto = f.dir / "absent.png";
   const auto photo = runClm3d("synth --photo " + noPhoto.string() + " --landmarks " +
                               f.points.string() + " --out " + (f.dir / "x").string());
   EXPECT_EQ(photo.exitCode, 1) << photo.output;
-  EXPECT_TRUE(contains(photo.output, noPhoto.string())) << photo.output;
+  EXPECT_TRUE(test::contains(photo.output, noPhoto.string())) << photo.output;
 
   const auto both = runClm3d("synth --photo " + f.photo.string() + " --head-seed 1 --landmarks " +
                              f.points.string() + " --out " + (f.dir / "x").string());
@@ -206,7 +202,7 @@ TEST(SynthPhotoCli, BadLandmarkFilesExitOneNamingTheFile) {
   const auto noPoints =
       runClm3d("synth --photo " + f.photo.string() + " --out " + (f.dir / "x").string());
   EXPECT_EQ(noPoints.exitCode, 2) << noPoints.output;
-  EXPECT_TRUE(contains(noPoints.output, "--landmarks")) << noPoints.output;
+  EXPECT_TRUE(test::contains(noPoints.output, "--landmarks")) << noPoints.output;
   EXPECT_FALSE(fs::exists(f.dir / "x"));
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/common/error.hpp"
 #include "core/dataset/manifest.hpp"
+#include "core/model/landmark_suggestions.hpp"
 #include "core/model/model_file.hpp"
 #include "core/project/autosave.hpp"
 #include "core/project/project.hpp"
@@ -21,7 +22,6 @@
 #include "ui/annotate/annotation_document.hpp"
 #include "ui/annotate/landmark_commands.hpp"
 #include "ui/annotate/landmark_list.hpp"
-#include "ui/annotate/landmark_suggestions.hpp"
 #include "ui/annotate/scan_mouse.hpp"
 #include "ui/annotate/scan_view.hpp"
 #include "ui/common/error_dialog.hpp"

@@ -3,10 +3,10 @@
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
+#include "core/review/review_overlay.hpp"
 #include "core/track/retrack.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
-#include "ui/track/review_overlay.hpp"
 
 namespace clm3d::ui {
 namespace {

@@ -9,10 +9,10 @@
 #include <optional>
 #include <vector>
 
+#include "core/review/track_session.hpp"
 #include "core/track/retrack.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/job_runner.hpp"
-#include "ui/track/track_session.hpp"
 
 namespace clm3d::ui {
 

@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/review/track_session.hpp"
 #include "core/track/correction_loop.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/page.hpp"
-#include "ui/track/track_session.hpp"
 
 class QBoxLayout;
 class QCheckBox;

@@ -8,7 +8,7 @@
 #include <optional>
 #include <utility>
 
-#include "ui/track/track_session.hpp"
+#include "core/review/track_session.hpp"
 
 namespace clm3d::ui {
 

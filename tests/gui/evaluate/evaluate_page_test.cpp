@@ -74,7 +74,7 @@ TrackTable predictionOf(const TrackTable& truth, double offset, double noise, un
 }
 
 struct Files {
-  test::TempFolder folder;
+  test::TempDir folder;
   fs::path truth, close, far, worse;
   explicit Files(int frames = 120) {
     const auto gt = truthTable(frames);
@@ -105,10 +105,6 @@ std::vector<QLineSeries*> lineSeries(QChart* chart) {
     if (auto* line = qobject_cast<QLineSeries*>(series)) result.push_back(line);
   }
   return result;
-}
-
-bool contains(const std::string& text, const QString& part) {
-  return text.find(part.toStdString()) != std::string::npos;
 }
 
 }  // namespace
@@ -188,11 +184,13 @@ class EvaluatePageTest : public QObject {
                QString::fromStdString(core.sequences[static_cast<std::size_t>(p)].label));
       QCOMPARE(table->item(p, 1)->text(), formatError(s.mean));
       QVERIFY2(
-          contains(printed, "error: mean " + table->item(p, 1)->text() + ", median " +
-                                table->item(p, 2)->text() + ", SD " + table->item(p, 3)->text()),
+          test::contains(printed, ("error: mean " + table->item(p, 1)->text() + ", median " +
+                                   table->item(p, 2)->text() + ", SD " + table->item(p, 3)->text())
+                                      .toStdString()),
           printed.c_str());
-      QVERIFY(contains(printed, "convergence rate " + table->item(p, 5)->text() +
-                                    ", points within 0.18: " + table->item(p, 4)->text()));
+      QVERIFY(test::contains(printed, ("convergence rate " + table->item(p, 5)->text() +
+                                       ", points within 0.18: " + table->item(p, 4)->text())
+                                          .toStdString()));
       QCOMPARE(table->item(p, 6)->text(), QString("%1/120").arg(s.scoredFrames));
     }
 
@@ -201,7 +199,7 @@ class EvaluatePageTest : public QObject {
     const QString p = "p = " + formatP(core.comparison.welch.p);
     QVERIFY2(page.comparisonText().contains("Welch") && page.comparisonText().contains(p),
              qPrintable(page.comparisonText()));
-    QVERIFY(contains(printed, p));
+    QVERIFY(test::contains(printed, p.toStdString()));
     QVERIFY(page.findChild<QLabel*>("comparisonLabel")->isVisible());
   }
 

@@ -25,7 +25,7 @@ class SmoothingJitterTest : public QObject {
   Q_OBJECT
  private slots:
   void smoothingLowersTheJitterThePageShows() {
-    test::TempFolder folder;
+    test::TempDir folder;
     const SequenceFiles sequence = SequenceFiles::inFolder(folder.path() / "turn");
     const fs::path raw = folder.path() / "raw.csv";
     const fs::path smooth = folder.path() / "smooth.csv";

@@ -23,7 +23,7 @@ class IsolatedSettings {
   void clear() { QSettings().clear(); }
 
  private:
-  TempFolder folder_;
+  TempDir folder_;
 };
 
 }  // namespace clm3d::test

@@ -20,7 +20,7 @@ class ProjectSessionTest : public QObject {
   void init() { settings_.clear(); }
 
   void createOpenSaveAndCloseEmitTheirSignals() {
-    test::TempFolder temp;
+    test::TempDir temp;
     ProjectSession session;
     QSignalSpy opened(&session, &ProjectSession::projectOpened);
     QSignalSpy closed(&session, &ProjectSession::projectClosed);
@@ -51,7 +51,7 @@ class ProjectSessionTest : public QObject {
   }
 
   void aBrokenFileFailsNamingItAndKeepsTheOpenProject() {
-    test::TempFolder temp;
+    test::TempDir temp;
     ProjectSession session;
     session.createNew(temp.path() / "good");
     const auto broken = temp.path() / "broken";
@@ -72,7 +72,7 @@ class ProjectSessionTest : public QObject {
   }
 
   void recentProjectsAreNewestFirstCappedAndPruned() {
-    test::TempFolder temp;
+    test::TempDir temp;
     ProjectSession session;
     for (int i = 0; i < kMaxRecentProjects + 2; ++i) {
       session.createNew(temp.path() / ("p" + std::to_string(i)));

@@ -5,22 +5,19 @@
 #include <QApplication>
 #include <QProcess>
 #include <QSignalSpy>
-#include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTest>
 #include <cmath>
 
 #include "core/project/project.hpp"
 #include "tests/gui/project/isolated_settings.hpp"
+#include "tests/gui/support/gui_test_main.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/evaluate/evaluate_page.hpp"
 #include "ui/evaluate/evaluation_inputs.hpp"
 #include "ui/shell/main_window.hpp"
 #include "ui/track/track_page.hpp"
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-#include <QVTKOpenGLNativeWidget.h>
-#endif
 
 namespace clm3d::ui {
 
@@ -40,7 +37,7 @@ class DemoProjectTest : public QObject {
  private slots:
   void theDemoProjectOpensTrackedWithItsEvaluation() {
     test::IsolatedSettings settings;
-    test::TempFolder temp;
+    test::TempDir temp;
     const fs::path out = temp.path() / "demo-out";
     QProcess demo;
     demo.setProcessChannelMode(QProcess::MergedChannels);
@@ -59,9 +56,7 @@ class DemoProjectTest : public QObject {
     saveProject(written);
 
     MainWindow window;
-    window.resize(1280, 800);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(test::showForTest(window, {1280, 800}));
     auto* track = pageOf<TrackPage>(window);
     auto* evaluate = pageOf<EvaluatePage>(window);
     QVERIFY(track && evaluate);
@@ -92,13 +87,6 @@ class DemoProjectTest : public QObject {
 
 }  // namespace clm3d::ui
 
-int main(int argc, char** argv) {
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-#endif
-  QApplication app(argc, argv);
-  clm3d::ui::DemoProjectTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+CLM3D_GUI_TEST_MAIN(clm3d::ui::DemoProjectTest)
 
 #include "demo_project_test.moc"

@@ -16,17 +16,14 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QSurfaceFormat>
 #include <QTest>
 #include <QTimer>
 #include <fstream>
 
 #include "tests/gui/project/isolated_settings.hpp"
+#include "tests/gui/support/gui_test_main.hpp"
 #include "ui/common/page.hpp"
 #include "ui/project/studio_settings.hpp"
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-#include <QVTKOpenGLNativeWidget.h>
-#endif
 
 namespace clm3d::ui {
 namespace {
@@ -288,7 +285,7 @@ class MainWindowTest : public QObject {
 
  private:
   test::IsolatedSettings settings_;
-  test::TempFolder temp_;
+  test::TempDir temp_;
   std::unique_ptr<MainWindow> window_;
   RecordingPage* first_ = nullptr;
   RecordingPage* second_ = nullptr;
@@ -296,13 +293,6 @@ class MainWindowTest : public QObject {
 
 }  // namespace clm3d::ui
 
-int main(int argc, char** argv) {
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-#endif
-  QApplication app(argc, argv);
-  clm3d::ui::MainWindowTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+CLM3D_GUI_TEST_MAIN(clm3d::ui::MainWindowTest)
 
 #include "main_window_test.moc"

@@ -7,19 +7,16 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
-#include <QSurfaceFormat>
 #include <QTest>
 #include <QTimer>
 
 #include "core/project/project.hpp"
 #include "tests/gui/project/isolated_settings.hpp"
+#include "tests/gui/support/gui_test_main.hpp"
 #include "ui/common/page.hpp"
 #include "ui/project/project_session.hpp"
 #include "ui/project/studio_settings.hpp"
 #include "ui/shell/main_window.hpp"
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-#include <QVTKOpenGLNativeWidget.h>
-#endif
 
 namespace clm3d::ui {
 
@@ -27,7 +24,7 @@ class StudioLaunchTest : public QObject {
   Q_OBJECT
  private slots:
   void screenshotModeWritesThePngOfTheOpenProject() {
-    test::TempFolder temp;
+    test::TempDir temp;
     createProject(temp.path() / "shot", "Shot");
     StudioOptions options;
     options.project = toQString(temp.path() / "shot");
@@ -40,7 +37,7 @@ class StudioLaunchTest : public QObject {
   }
 
   void theDemoFolderOfClm3dDemoOpensWithItsPage() {
-    test::TempFolder temp;
+    test::TempDir temp;
     createProject(temp.path() / "demo-out", "clm3d demo");
     const QString shot = toQString(temp.path() / "demo.png");
     const QString page = pageTitle();
@@ -52,7 +49,7 @@ class StudioLaunchTest : public QObject {
   }
 
   void aMissingDemoProjectSaysHowToMakeIt() {
-    test::TempFolder temp;
+    test::TempDir temp;
     const QString dir = toQString(temp.path() / "nothing");
     const QString message = missingDemoMessage(dir);
     QVERIFY2(message.contains("clm3d demo --out " + dir), qPrintable(message));
@@ -70,7 +67,7 @@ class StudioLaunchTest : public QObject {
   // CLM3D_STUDIO_MEASURE_PROJECT=DIR (e.g. a `clm3d demo` folder), for that project: it is the
   // pages' work (docs/studio.md).
   void openingAProjectDoesNotStallTheGuiThread() {
-    test::TempFolder temp;
+    test::TempDir temp;
     createProject(temp.path() / "empty");
     const QString empty = toQString(temp.path() / "empty");
     const double shell = longestStallOpening(empty, MainWindow::PageSet::None);
@@ -86,7 +83,7 @@ class StudioLaunchTest : public QObject {
   }
 
   void theLastProjectReopensUnlessTurnedOffOrGone() {
-    test::TempFolder temp;
+    test::TempDir temp;
     ProjectSession session;
     session.createNew(temp.path() / "last");
     const QString last = toQString(temp.path() / "last");
@@ -123,7 +120,7 @@ class StudioLaunchTest : public QObject {
   }
 
   void aBrokenProjectOrUnknownPageFailsInScreenshotMode() {
-    test::TempFolder temp;
+    test::TempDir temp;
     StudioOptions options;
     options.project = toQString(temp.path() / "missing");
     options.screenshot = toQString(temp.path() / "bad.png");
@@ -171,13 +168,6 @@ double clm3d::ui::StudioLaunchTest::longestStallOpening(const QString& project,
   return watchdog.longestStallMs();
 }
 
-int main(int argc, char** argv) {
-#if __has_include(<QVTKOpenGLNativeWidget.h>)
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-#endif
-  QApplication app(argc, argv);
-  clm3d::ui::StudioLaunchTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+CLM3D_GUI_TEST_MAIN(clm3d::ui::StudioLaunchTest)
 
 #include "studio_launch_test.moc"

@@ -5,7 +5,6 @@
 #include <QCoreApplication>
 #include <QMessageBox>
 #include <QTest>
-#include <random>
 
 namespace clm3d::test {
 
@@ -88,24 +87,15 @@ void expectErrorDialog(QString* message, int timeoutMs) {
       timeoutMs);
 }
 
-std::filesystem::path fixturePath(const std::string& relative) {
-  return std::filesystem::path(CLM3D_TEST_FIXTURES) / relative;
-}
-
-std::filesystem::path binaryDir() {
-  return CLM3D_BINARY_DIR;
-}
-
-TempFolder::TempFolder() {
-  std::random_device device;
-  path_ = std::filesystem::temp_directory_path() /
-          ("clm3d-gui-" + std::to_string(device()) + "-" + std::to_string(device()));
-  std::filesystem::create_directories(path_);
-}
-
-TempFolder::~TempFolder() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
+bool showForTest(QWidget& widget, QSize size, bool activate) {
+  widget.resize(size);
+  widget.show();
+  if (!QTest::qWaitForWindowExposed(&widget)) return false;
+  if (!activate) return true;
+  widget.activateWindow();
+  if (!QTest::qWaitForWindowActive(&widget)) return false;
+  widget.setFocus();
+  return true;
 }
 
 }  // namespace clm3d::test

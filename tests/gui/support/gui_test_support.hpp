@@ -1,6 +1,7 @@
 // Helpers for the QTest GUI tests: a watchdog that measures the longest stall of the GUI thread's
 // event loop (the "no stall over 100 ms during training or tracking"), waiting on a
-// condition while events run, closing the modal error dialog a test expects, and paths.
+// condition while events run, and closing the modal dialogs a test expects. Temporary folders,
+// paths and files come from tests/support/test_files.hpp, as for the GoogleTest suites.
 #pragma once
 
 #include <QElapsedTimer>
@@ -8,10 +9,13 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <QWidget>
 #include <exception>
 #include <filesystem>
 #include <functional>
 #include <thread>
+
+#include "tests/support/test_files.hpp"
 
 namespace clm3d::test {
 
@@ -57,6 +61,11 @@ void answerNextMessageBox(const QString& objectName, QMessageBox::StandardButton
 // informative text in *message. Call before the action that should fail.
 void expectErrorDialog(QString* message, int timeoutMs = 10000);
 
+// Resizes and shows `widget`, then waits until the window system exposes it; with `activate`, also
+// makes it the active window with the keyboard focus (for tests that type shortcuts). False when
+// that did not happen within QTest's default wait.
+bool showForTest(QWidget& widget, QSize size, bool activate = false);
+
 // Runs `work` on a worker thread and waits, rethrowing what it threw: training and rendering use
 // the offscreen renderer, which must not run on the GUI thread.
 template <typename Work>
@@ -72,20 +81,5 @@ void runOffGuiThread(Work&& work) {
   worker.join();
   if (error) std::rethrow_exception(error);
 }
-
-std::filesystem::path fixturePath(const std::string& relative);
-std::filesystem::path binaryDir();
-// A fresh folder under the system temp directory, removed on destruction.
-class TempFolder {
- public:
-  TempFolder();
-  ~TempFolder();
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace clm3d::test

@@ -56,7 +56,7 @@ double frameError(const Eigen::Matrix2Xd& points, const Eigen::Matrix2Xd& truth)
 class CorrectionLoopTest : public QObject {
   Q_OBJECT
  private:
-  std::optional<test::TempFolder> temp_;
+  std::optional<test::TempDir> temp_;
   fs::path root_;
   Project project_;
   SequenceFiles sequence_;
@@ -145,22 +145,14 @@ class CorrectionLoopTest : public QObject {
       root_ = fs::path(keep.toStdString());
       fs::remove_all(root_);
     }
-    project_ = createProject(root_ / "project", "loop-test");
-    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 1.5);
-    const fs::path& model = fixture.model;
-    sequence_ = fixture.sequence;
-    summary_ = fixture.summary;
+    test::TrackProject made = test::makeTrackProject(root_ / "project", "loop-test", kFrames, 1.5);
+    project_ = std::move(made.project);
+    sequence_ = made.fixture.sequence;
+    summary_ = made.fixture.summary;
     QCOMPARE(summary_.frames, kFrames);
-    project_.models.push_back(model);
-    project_.videos.push_back(sequence_.video);
     saveProject(project_);
     page_ = std::make_unique<TrackPage>();
-    page_->resize(1400, 900);
-    page_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(page_.get()));
-    page_->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(page_.get()));
-    page_->setFocus();
+    QVERIFY(test::showForTest(*page_, {1400, 900}, true));
     page_->setProject(&project_);
     QCOMPARE(page_->session().video().path, sequence_.video);
   }

@@ -41,9 +41,7 @@ class LandmarkMarksTest : public QObject {
 
   void hiddenIsHollowAndLowConfidenceIsRinged() {
     FrameView view;
-    view.resize(640, 480);
-    view.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QVERIFY(test::showForTest(view, {640, 480}));
     QImage frame(320, 240, QImage::Format_RGB32);
     frame.fill(QColor(128, 128, 128));
     view.setImage(frame);

@@ -1,13 +1,16 @@
 // The Track page tests' material, made at run time: the fit fixture's tiny trained model (3 views,
 // 2 scales, 12x12 patches) saved into a project folder, and a synthetic sequence of the held-out
 // procedural head turning in yaw from 0 degrees by `stepDeg` per frame (320x240, 56 pixels between
-// the eyes, lossless video + truth, as `clm3d synth` writes). Rendering runs off the GUI thread.
+// the eyes, lossless video + truth, as `clm3d synth` writes), and a new project holding both.
+// Rendering runs off the GUI thread.
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/model/model_file.hpp"
+#include "core/project/project.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
 #include "tests/support/fit_fixture.hpp"
 
@@ -40,6 +43,23 @@ inline TrackFixture writeTrackFixture(const std::filesystem::path& projectFolder
                                              settings, SequenceSubject{}, fixture.sequence);
   });
   return fixture;
+}
+
+// A new project at `folder` named `name` whose models and videos are the fixture's (in memory:
+// save it if the test needs the file to say so).
+struct TrackProject {
+  Project project;
+  TrackFixture fixture;
+};
+
+inline TrackProject makeTrackProject(const std::filesystem::path& folder, const std::string& name,
+                                     int frames, double stepDeg) {
+  TrackProject made;
+  made.project = createProject(folder, name);
+  made.fixture = writeTrackFixture(made.project.folder, frames, stepDeg);
+  made.project.models.push_back(made.fixture.model);
+  made.project.videos.push_back(made.fixture.sequence.video);
+  return made;
 }
 
 }  // namespace clm3d::test

@@ -58,7 +58,7 @@ class TrackPageTest : public QObject {
   Q_OBJECT
  private:
   test::IsolatedSettings settings_;  // the preferences tests never touch the user's own
-  test::TempFolder temp_;
+  test::TempDir temp_;
   Project project_;
   SequenceFiles sequence_;
   fs::path model_;
@@ -70,19 +70,13 @@ class TrackPageTest : public QObject {
 
  private slots:
   void initTestCase() {
-    project_ = createProject(temp_.path() / "project", "track-test");
-    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 2.0);
-    model_ = fixture.model;
-    sequence_ = fixture.sequence;
-    project_.models.push_back(model_);
-    project_.videos.push_back(sequence_.video);
+    test::TrackProject made =
+        test::makeTrackProject(temp_.path() / "project", "track-test", kFrames, 2.0);
+    project_ = std::move(made.project);
+    model_ = made.fixture.model;
+    sequence_ = made.fixture.sequence;
     page_ = std::make_unique<TrackPage>();
-    page_->resize(1280, 820);
-    page_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(page_.get()));
-    page_->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(page_.get()));
-    page_->setFocus();
+    QVERIFY(test::showForTest(*page_, {1280, 820}, true));
     page_->setProject(&project_);
     // Drags here are single edits; the re-track that follows them is correction_loop_test's.
     page_->setLoopEnabled(false);

@@ -54,7 +54,7 @@ double expectedDifference(const TrackRow& truth) {
 class TrackReviewTest : public QObject {
   Q_OBJECT
  private:
-  test::TempFolder temp_;
+  test::TempDir temp_;
   Project project_;
   SequenceFiles sequence_;
   fs::path model_;
@@ -64,25 +64,22 @@ class TrackReviewTest : public QObject {
 
   void openPage() {
     page_ = std::make_unique<TrackPage>();
-    page_->resize(1280, 820);
-    page_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(page_.get()));
+    QVERIFY(test::showForTest(*page_, {1280, 820}));
   }
 
  private slots:
   void initTestCase() {
-    project_ = createProject(temp_.path() / "project", "review-test");
-    const test::TrackFixture fixture = test::writeTrackFixture(project_.folder, kFrames, 2.0);
-    model_ = fixture.model;
-    sequence_ = fixture.sequence;
+    test::TrackProject made =
+        test::makeTrackProject(temp_.path() / "project", "review-test", kFrames, 2.0);
+    project_ = std::move(made.project);
+    model_ = made.fixture.model;
+    sequence_ = made.fixture.sequence;
     truth_ = readTrackTable(sequence_.truth);
     QCOMPARE(static_cast<int>(truth_.rows.size()), kFrames);
     // A track made elsewhere (by `clm3d track`, or another model), in the project's layout.
     shiftedTrack_ = project_layout::tracksFile(project_.folder, sequence_.video, model_);
     fs::create_directories(shiftedTrack_.parent_path());
     writeTrackTable(shiftedTrack_, shifted(truth_, kShiftPixels));
-    project_.models.push_back(model_);
-    project_.videos.push_back(sequence_.video);
     project_.tracks.push_back(shiftedTrack_);
     project_.groundTruth.push_back(sequence_.truth);
     saveProject(project_);

@@ -5,8 +5,6 @@
 // With CLM3D_STUDIO_SCREENSHOTS=FOLDER it also writes the docs' screenshots there (a larger run).
 #include "ui/train/train_page.hpp"
 
-#include <QVTKOpenGLNativeWidget.h>
-
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -18,7 +16,6 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSplitter>
-#include <QSurfaceFormat>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
@@ -29,6 +26,7 @@
 #include "core/project/project.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
+#include "tests/gui/support/gui_test_main.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/train/mean_patch_grid.hpp"
@@ -73,9 +71,7 @@ TrainSettings tinySettings(int scales = 1) {
 }
 
 void showPage(TrainPage& page, QSize size = {1500, 950}) {
-  page.resize(size);
-  page.show();
-  QVERIFY(QTest::qWaitForWindowExposed(&page));
+  QVERIFY(test::showForTest(page, size));
 }
 
 }  // namespace
@@ -99,7 +95,7 @@ class TrainPageTest : public QObject {
   }
 
   void sourcesTableShowsCompletenessAndUnreadableScans() {
-    test::TempFolder folder;
+    test::TempDir folder;
     const fs::path dir = folder.path();
     writeTextAtomically(dir / "head.obj", "# not read by the table\n");
     const SynthHead head = generateHead(3, {}, SynthOptions{2.0, 256});
@@ -137,7 +133,7 @@ class TrainPageTest : public QObject {
   }
 
   void trainRunsInTheBackgroundAndShowsTheModel() {
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project = makeProject(folder.path(), "1-4", 512);
     TrainPage page;
     page.setProject(&project);
@@ -221,7 +217,7 @@ class TrainPageTest : public QObject {
   }
 
   void cancelEndsWithoutAModelFile() {
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project = makeProject(folder.path(), "1-6", 1024);
     TrainPage page;
     page.setProject(&project);
@@ -256,7 +252,7 @@ class TrainPageTest : public QObject {
   }
 
   void aBrokenManifestOrScanEndsInAnErrorDialog() {
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project = makeProject(folder.path(), "1-2");
     // Unreadable from the start: the table says why and Train is off.
     writeTextAtomically(project.manifest, "{ not json");
@@ -302,7 +298,7 @@ class TrainPageTest : public QObject {
   }
 
   void anExistingModelIsNeverReplaced() {
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project = makeProject(folder.path(), "1-2");
     fs::create_directories(folder.path() / "models");
     writeTextAtomically(folder.path() / "models" / "kept.clm3d", "earlier model");
@@ -319,7 +315,7 @@ class TrainPageTest : public QObject {
   }
 
   void aBrokenModelFileShowsAnErrorDialogNamingIt() {
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project = makeProject(folder.path(), "1-2");
     fs::create_directories(folder.path() / "models");
     const fs::path broken = folder.path() / "models" / "broken.clm3d";
@@ -345,7 +341,7 @@ class TrainPageTest : public QObject {
   void screenshots() {
     const QByteArray out = qgetenv("CLM3D_STUDIO_SCREENSHOTS");
     if (out.isEmpty()) QSKIP("set CLM3D_STUDIO_SCREENSHOTS=FOLDER to write the screenshots");
-    test::TempFolder folder;
+    test::TempDir folder;
     Project project =
         makeProject(folder.path() / "demo-project", "1-6", 512, R"(["neutral", "smile"])");
     TrainPage page;
@@ -377,11 +373,6 @@ class TrainPageTest : public QObject {
 
 }  // namespace clm3d::ui
 
-int main(int argc, char** argv) {
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  QApplication app(argc, argv);
-  clm3d::ui::TrainPageTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+CLM3D_GUI_TEST_MAIN(clm3d::ui::TrainPageTest)
 
 #include "train_page_test.moc"

@@ -1,4 +1,4 @@
-#include "ui/track/track_session.hpp"
+#include "core/review/track_session.hpp"
 
 #include <cmath>
 #include <limits>
@@ -6,7 +6,7 @@
 #include "core/eval/landmark_error.hpp"
 #include "core/video/video_reader.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 Camera VideoInfo::camera() const {
   return Camera::fromVerticalFov(width, height, kDefaultVerticalFovDeg);
@@ -173,4 +173,4 @@ void TrackSession::updateErrors() {
   }
 }
 
-}  // namespace clm3d::ui
+}  // namespace clm3d

@@ -1,7 +1,8 @@
 // Where the annotator suggests landmarks: the mirror image of a placed landmark across the face's
 // symmetry plane, a first guess of the unplaced ones from a shape model, and points imported from
 // another annotation (e.g. 68 iBUG points converted to the scheme). Every suggestion is snapped
-// onto the scan's surface with the snap function the view provides.
+// onto the scan's surface with the snap function the caller provides (the studio's annotate page
+// passes its view's surface pick; a test can pass core/mesh's nearestSurfacePoint).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -12,7 +13,7 @@
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/scheme.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 using SnapToSurface = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
@@ -33,4 +34,4 @@ LandmarkSet firstGuess(const ShapeModel& model, const LandmarkSet& points,
 LandmarkSet mergeImported(const LandmarkSet& current, const LandmarkSet& imported,
                           const SnapToSurface& snap);
 
-}  // namespace clm3d::ui
+}  // namespace clm3d

@@ -2,18 +2,18 @@
 // --overlay`): the shown points are the ground-truth row (the track, or the hand correction), the
 // patches come from one short search from the frame's stored fit state, which puts the fitter's
 // templates back (one iteration at the finest scale: a few ms at webcam sizes, measured by the
-// page). Used for the frame view's patches on the GUI thread and for the overlay export on a
-// worker.
+// page). The studio's frame view draws its patches with it on the GUI thread and its overlay
+// export on a worker; the fitter passed in must be the caller's own (it is not thread-safe).
 #pragma once
 
 #include <opencv2/core/mat.hpp>
 #include <optional>
 
 #include "core/fit/fitter.hpp"
+#include "core/review/track_session.hpp"
 #include "core/track/fit_overlay.hpp"
-#include "ui/track/track_session.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 // The fitter settings of that short search.
 FitSettings overlaySearchSettings();
@@ -26,4 +26,4 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
                        Fitter& fitter, const Scheme& scheme, const FitOverlayOptions& options,
                        bool fitMissingStates);
 
-}  // namespace clm3d::ui
+}  // namespace clm3d

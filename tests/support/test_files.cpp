@@ -1,4 +1,4 @@
-#include "tests/support/test_support.hpp"
+#include "tests/support/test_files.hpp"
 
 #include <sys/wait.h>
 

@@ -1,8 +1,8 @@
-#include "ui/track/review_overlay.hpp"
+#include "core/review/review_overlay.hpp"
 
 #include "core/detect/initialisation.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 FitSettings overlaySearchSettings() {
   FitSettings settings;
@@ -53,4 +53,4 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
   drawFitOverlay(bgr, step, fitter, scheme, options);
 }
 
-}  // namespace clm3d::ui
+}  // namespace clm3d

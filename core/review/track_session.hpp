@@ -1,7 +1,9 @@
-// What the track page is working on, without any widget: the video and model, the tracker's output
+// A tracked video under review, without any widget: the video and model, the tracker's output
 // with what each frame's fit needs to be drawn again (its state and view), the ground-truth set the
 // user corrects (it starts as a copy of the track; hand-corrected frames are keyframes), and the
-// per-frame error against a reference. The page, the undo commands and the jobs share it.
+// per-frame error against a reference. In core (no Qt) so that it is unit-tested on its own; the
+// studio's track page owns one, and its undo commands and jobs share it (they keep a reference, so
+// the page must outlive them).
 #pragma once
 
 #include <filesystem>
@@ -16,7 +18,7 @@
 #include "core/track/ground_truth.hpp"
 #include "core/track/track_table.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 // The part of a frame's fit the patch overlay needs to search that frame again.
 struct FrameFit {
@@ -88,4 +90,4 @@ class TrackSession {
   std::vector<double> errors_;
 };
 
-}  // namespace clm3d::ui
+}  // namespace clm3d

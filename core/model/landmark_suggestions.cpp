@@ -1,9 +1,9 @@
-#include "ui/annotate/landmark_suggestions.hpp"
+#include "core/model/landmark_suggestions.hpp"
 
 #include "core/geometry/symmetry_plane.hpp"
 #include "core/model/shape_guess.hpp"
 
-namespace clm3d::ui {
+namespace clm3d {
 
 std::optional<Eigen::Vector3d> mirrorSuggestion(const Scheme& scheme, const LandmarkSet& points,
                                                 int index, const Eigen::Vector3d& left,
@@ -37,4 +37,4 @@ LandmarkSet mergeImported(const LandmarkSet& current, const LandmarkSet& importe
   return result;
 }
 
-}  // namespace clm3d::ui
+}  // namespace clm3d
