@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -480,6 +481,20 @@ void saveModel(const ClmModel& model, const std::filesystem::path& path) {
 
 ClmModel loadModel(const std::filesystem::path& path) {
   return parseModel(readTextFile(path), path.string());
+}
+
+std::uint32_t modelFileVersion(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string start(kMagic.size() + 4, '\0');
+  if (!in || !in.read(start.data(), static_cast<std::streamsize>(start.size())) ||
+      std::string_view(start).substr(0, kMagic.size()) != kMagic) {
+    throwInputError(path, "not a clm3d model");
+  }
+  std::uint32_t version = 0;
+  for (int i = 3; i >= 0; --i) {
+    version = (version << 8) | static_cast<unsigned char>(start[kMagic.size() + i]);
+  }
+  return version;
 }
 
 ClmModel parseModel(std::string_view bytes, const std::string& sourceName) {

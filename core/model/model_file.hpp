@@ -27,6 +27,9 @@ void saveModel(const ClmModel& model, const std::filesystem::path& path);
 // InputError "FILE: ..." for: not a clm3d model, newer format version, truncated, corrupt
 // (checksum mismatch), malformed header, inconsistent sizes (names the field).
 ClmModel loadModel(const std::filesystem::path& path);
+// The format version the file was written in (an older one loads and is saved as the current one);
+// InputError naming the file if it does not start like a clm3d model.
+std::uint32_t modelFileVersion(const std::filesystem::path& path);
 // What loadModel and the fuzzer call; sourceName names the input in errors.
 ClmModel parseModel(std::string_view bytes, const std::string& sourceName);
 

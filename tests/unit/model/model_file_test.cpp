@@ -312,6 +312,7 @@ TEST(ModelFile, Version2ExpertsLoadAsOneUnit) {
     }
   }
   EXPECT_GT(experts, 0);
+  EXPECT_EQ(modelFileVersion(file), 2u);
   const std::string rewritten = serializeModel(model);
   std::memcpy(&version, rewritten.data() + 8, 4);
   EXPECT_EQ(version, kModelFormatVersion);
