@@ -62,7 +62,7 @@ void runInfo(const std::filesystem::path& path) {
   const ClmModel model = loadModel(path);
   const Scheme scheme = model.scheme();
   std::cout << "model: " << path.string() << " (" << std::filesystem::file_size(path)
-            << " bytes, format version " << kModelFormatVersion << ")\n";
+            << " bytes, format version " << modelFileVersion(path) << ")\n";
   std::cout << "scheme: " << scheme.name() << ", " << scheme.size() << " landmarks\n";
   std::cout << "type: " << (model.singleView ? "single-view 2D baseline" : "multi-view 3D") << ", "
             << model.views.size() << " view(s), patch ratio " << model.patchRatio << "\n";

@@ -22,13 +22,13 @@ namespace clm3d {
 void sampleRegion(const cv::Mat& image, const Eigen::Vector2d& centre, double angle, int size,
                   cv::Mat& out);
 
-// The expert's score w . normalisePatch(x) for every patchSize window of `region` (a square of
-// patchSize + 2r pixels): a (2r+1)^2 CV_32F map whose pixel (r + dx, r + dy) scores the patch
-// displaced by (dx, dy) from the region's centre. The region must be continuous (sampleRegion's
-// output is).
+// The expert's unit scores w_k . normalisePatch(x) for every patchSize window of `region` (a
+// square of patchSize + 2r pixels): a (2r+1)^2 CV_32FC(K) map whose pixel (r + dx, r + dy) holds
+// the K scores of the patch displaced by (dx, dy) from the region's centre. The region must be
+// continuous (sampleRegion's output is).
 void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSize, cv::Mat& scores);
 
-// The logistic responses of expertScores, in (0, 1).
+// The expert's responses (PatchExpert::response of expertScores), a (2r+1)^2 CV_32FC1 map.
 void expertResponse(const cv::Mat& region, const PatchExpert& expert, int patchSize,
                     cv::Mat& response);
 

@@ -112,12 +112,19 @@ void validatePatchModel(const PatchModel& patch, const ViewModel& view, int n,
   for (std::size_t e = 0; e < patch.experts.size(); ++e) {
     const PatchExpert& expert = patch.experts[e];
     const std::string where = field + ".experts[" + std::to_string(e) + "]";
-    if (expert.weights.size() != pixels) {
-      fail(where, str(expert.weights.size()) + " weights, expected " + str(pixels));
+    if (expert.weights.rows() != pixels || expert.units() < 1) {
+      fail(where, str(expert.weights.rows()) + " weights per unit, expected " + str(pixels));
+    }
+    if (expert.bias.size() != expert.units() || expert.alpha.size() != expert.units()) {
+      fail(where, "biases or unit weights do not match its " + str(expert.units()) + " units");
+    }
+    if (expert.units() != patch.experts.front().units()) {
+      fail(where, "has " + str(expert.units()) + " units, the scale's first expert " +
+                      str(patch.experts.front().units()));
     }
     requireFinite(expert.weights, where);
-    if (!std::isfinite(expert.gain) || !std::isfinite(expert.bias)) {
-      fail(where, "gain or bias is not finite");
+    if (!expert.bias.allFinite() || !expert.alpha.allFinite()) {
+      fail(where, "a bias or unit weight is not finite");
     }
   }
 }

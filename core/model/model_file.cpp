@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -27,6 +28,7 @@ constexpr std::int64_t kMaxPoints = 10'000;
 constexpr std::int64_t kMaxViews = 1'000;
 constexpr std::int64_t kMaxScales = 16;
 constexpr std::int64_t kMaxPatchSize = 1'024;
+constexpr std::int64_t kMaxExpertUnits = 64;
 
 using nlohmann::json;
 
@@ -110,7 +112,7 @@ bool samePatchModel(const PatchModel& a, const PatchModel& b) {
   for (std::size_t e = 0; e < a.experts.size(); ++e) {
     const PatchExpert& x = a.experts[e];
     const PatchExpert& y = b.experts[e];
-    if (x.weights != y.weights || x.gain != y.gain || x.bias != y.bias) return false;
+    if (x.weights != y.weights || x.bias != y.bias || x.alpha != y.alpha) return false;
   }
   return true;
 }
@@ -149,10 +151,12 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
     const ViewModel& view = model.views[v];
     json scales = json::array();
     for (const PatchModel& patch : view.scales) {
-      scales.push_back({{"patchSize", patch.patchSize},
-                        {"landmarks", patch.landmarks},
-                        {"modes", patch.pca.modeCount()},
-                        {"experts", patch.hasExperts()}});
+      json scale = {{"patchSize", patch.patchSize},
+                    {"landmarks", patch.landmarks},
+                    {"modes", patch.pca.modeCount()},
+                    {"experts", patch.hasExperts()}};
+      if (patch.hasExperts()) scale["expertUnits"] = patch.experts.front().units();
+      scales.push_back(std::move(scale));
     }
     std::vector<int> visible;
     for (const bool flag : view.visible) visible.push_back(flag ? 1 : 0);
@@ -188,6 +192,11 @@ const Header& array(JsonFields& object, const char* key, std::size_t maxSize) {
   const Header& value = object.array(key);
   if (value.size() > maxSize) fieldError(object.name(key), "too many entries");
   return value;
+}
+
+// The units of a scale's experts: 1 before version 3, which gives them as "expertUnits".
+std::int64_t expertUnits(JsonFields& scale, std::uint32_t version) {
+  return version >= 3 ? scale.integer("expertUnits", 1, kMaxExpertUnits) : 1;
 }
 
 double number(JsonFields& object, const char* key) {
@@ -262,9 +271,10 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       addValues(floats, d, 2 + static_cast<std::uint64_t>(modes), scale.path());  // mean, alpha, P
       addValues(floats, static_cast<std::uint64_t>(modes), 1, scale.path());
       if (version >= 2 && scale.boolean("experts")) {
-        // weights, gain and bias per landmark
-        addValues(floats, landmarks.size(), 2 + static_cast<std::uint64_t>(patchSize * patchSize),
-                  scale.path());
+        // per landmark: version 2, weights, gain and bias; version 3, K x (weights, bias, alpha)
+        const auto units = static_cast<std::uint64_t>(expertUnits(scale, version));
+        addValues(floats, landmarks.size() * units,
+                  2 + static_cast<std::uint64_t>(patchSize * patchSize), scale.path());
       }
       scale.rejectUnknown();
     }
@@ -316,7 +326,12 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       patch.pca.variances.resize(modes);
       patch.alpha.assign(patch.landmarks.size(), Eigen::VectorXf(pixels));
       if (version >= 2 && scale.boolean("experts")) {
-        patch.experts.assign(patch.landmarks.size(), PatchExpert{Eigen::VectorXf(pixels)});
+        const auto units = static_cast<Eigen::Index>(expertUnits(scale, version));
+        PatchExpert expert;
+        expert.weights.resize(pixels, units);
+        expert.bias.resize(units);
+        expert.alpha.resize(units);
+        patch.experts.assign(patch.landmarks.size(), expert);
       }
       view.scales.push_back(std::move(patch));
     }
@@ -330,11 +345,17 @@ void readArray(Reader& reader, Eigen::PlainObjectBase<Derived>& destination) {
   reader.readInto(destination.data(), static_cast<std::size_t>(destination.size()));
 }
 
-void readExperts(Reader& reader, std::vector<PatchExpert>& experts) {
+void readExperts(Reader& reader, std::vector<PatchExpert>& experts, std::uint32_t version) {
   for (PatchExpert& expert : experts) {
     readArray(reader, expert.weights);
-    reader.readInto(&expert.gain, 1);
-    reader.readInto(&expert.bias, 1);
+    if (version >= 3) {
+      readArray(reader, expert.bias);
+      readArray(reader, expert.alpha);
+    } else {  // a linear filter, its logistic's gain and bias
+      float gainAndBias[2];
+      reader.readInto(gainAndBias, 2);
+      expert = PatchExpert::logistic(expert.weights.col(0), gainAndBias[0], gainAndBias[1]);
+    }
   }
 }
 
@@ -375,7 +396,7 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readArray(reader, patch.pca.components);
       readArray(reader, patch.pca.variances);
       for (Eigen::VectorXf& alpha : patch.alpha) readArray(reader, alpha);
-      readExperts(reader, patch.experts);
+      readExperts(reader, patch.experts, version);
     }
   }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
@@ -439,7 +460,8 @@ std::string serializeModel(const ClmModel& model) {
       for (const Eigen::VectorXf& alpha : patch.alpha) appendFloats(payload, alpha);
       for (const PatchExpert& expert : patch.experts) {
         appendFloats(payload, expert.weights);
-        appendFloats(payload, Eigen::Vector2f(expert.gain, expert.bias));
+        appendFloats(payload, expert.bias);
+        appendFloats(payload, expert.alpha);
       }
     }
   }
@@ -459,6 +481,20 @@ void saveModel(const ClmModel& model, const std::filesystem::path& path) {
 
 ClmModel loadModel(const std::filesystem::path& path) {
   return parseModel(readTextFile(path), path.string());
+}
+
+std::uint32_t modelFileVersion(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string start(kMagic.size() + 4, '\0');
+  if (!in || !in.read(start.data(), static_cast<std::streamsize>(start.size())) ||
+      std::string_view(start).substr(0, kMagic.size()) != kMagic) {
+    throwInputError(path, "not a clm3d model");
+  }
+  std::uint32_t version = 0;
+  for (int i = 3; i >= 0; --i) {
+    version = (version << 8) | static_cast<unsigned char>(start[kMagic.size() + i]);
+  }
+  return version;
 }
 
 ClmModel parseModel(std::string_view bytes, const std::string& sourceName) {

@@ -16,8 +16,9 @@
 namespace clm3d {
 
 // 2: patch experts per scale, mirrored views stored as a reference to their source view.
-// Version 1 files (no experts, every view stored) still load.
-inline constexpr std::uint32_t kModelFormatVersion = 2;
+// 3: experts of several units (a scale's "expertUnits"; weights, biases and unit weights).
+// Version 1 files (no experts, every view stored) and version 2 files still load.
+inline constexpr std::uint32_t kModelFormatVersion = 3;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);
@@ -26,6 +27,9 @@ void saveModel(const ClmModel& model, const std::filesystem::path& path);
 // InputError "FILE: ..." for: not a clm3d model, newer format version, truncated, corrupt
 // (checksum mismatch), malformed header, inconsistent sizes (names the field).
 ClmModel loadModel(const std::filesystem::path& path);
+// The format version the file was written in (an older one loads and is saved as the current one);
+// InputError naming the file if it does not start like a clm3d model.
+std::uint32_t modelFileVersion(const std::filesystem::path& path);
 // What loadModel and the fuzzer call; sourceName names the input in errors.
 ClmModel parseModel(std::string_view bytes, const std::string& sourceName);
 

@@ -4,6 +4,9 @@
 // of the displacement (1 pixel SD) gives the filter; a logistic fit of its scores (true position
 // against displacements of 2 pixels or more, the two classes weighted equally) gives gain and
 // bias. Closed form and deterministic, so training time is predictable and models reproducible.
+// With more than one unit, that expert is grown into a neural field (patch_expert.hpp) by
+// mini-batch Adam on the same windows against the Gaussian targets, seeded and single-threaded, so
+// still deterministic; it is kept only where it beats the linear expert on held-out regions.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,6 +22,9 @@ struct ExpertTrainingSettings {
   int negativesPerRegion = 16;  // displaced patches drawn per region (2..radius pixels away)
   double ridge = 0.1;          // ridge weight relative to the mean diagonal of the data's Gram
   std::uint64_t seed = 1;      // the draw of the displacements
+  int units = 1;               // 1: a linear filter with a logistic output; more: a neural field
+  int epochs = 8;              // neural field: passes over the training windows
+  float learningRate = 1e-3f;  // neural field: Adam's initial step (decays to a tenth)
 };
 
 // `regions`: one column per training region, (patchSize + 2 radius)^2 raw grey values each,

@@ -146,6 +146,7 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
     expertSettings.patchSize = settings.patchSize;
     expertSettings.radius = settings.expertRadius;
     expertSettings.ridge = settings.expertRidge;
+    expertSettings.units = settings.expertUnits;
     expertSettings.seed = mixKey(settings.seed, static_cast<std::uint64_t>(j));
     patches.experts[static_cast<std::size_t>(job.entry)] =
         trainPatchExpert(regions, expertSettings);

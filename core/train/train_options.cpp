@@ -90,6 +90,12 @@ std::vector<TrainOption> buildOptions() {
            100.0, 4),
       [](S& s) -> double& { return s.expertRidge; }));
   o.push_back(integerOption<S>(
+      spec("expert-units", "Expert units", experts,
+           "units of each patch expert: 1 = a linear filter with a logistic output, more = a small "
+           "neural field (the units' sigmoid responses summed; slower to train and to search)",
+           1, 16),
+      [](S& s) -> int& { return s.expertUnits; }));
+  o.push_back(integerOption<S>(
       spec("photo-jitter", "Photo jitter", experts,
            "perturbed placements (scale, roll, shift) of each training photo beside its exact one",
            0, 20),

@@ -92,7 +92,7 @@ std::string TrainSettings::toJson() const {
   j["hidden_share"] = hiddenShare;
   j["supersample"] = supersample;
   if (expertRadius > 0) {  // absent when off, so models trained without experts are unchanged
-    j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}};
+    j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}, {"units", expertUnits}};
   }
   j["photo_jitter"] = photoJitter;
   j["render_size"] = renderSize();

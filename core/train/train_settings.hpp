@@ -49,6 +49,9 @@ struct TrainSettings {
   // up to this many pixels at every scale; 0 trains none (a model for the template optimisers).
   int expertRadius = 6;
   double expertRidge = 0.1;  // ridge weight of the experts' regression
+  // Units per expert: 1 a linear filter with a logistic output, more a neural field
+  // (core/model/patch_expert.hpp).
+  int expertUnits = 1;
   // Perturbed placements of each training photo beside its exact one (scale, roll and shift
   // drawn within `perturbation`'s ranges, as the renders'). Off by default: 2 tripled the photo
   // samples and the training time and left the error on 100 held-out LFPW training photos where it

@@ -2,6 +2,7 @@
 // and a bad manifest named in the error.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "core/model/model_file.hpp"
@@ -31,6 +32,36 @@ TEST(TrainCli, TrainsASmallModelThatLoads) {
   EXPECT_NE(result.output.find("trained multi-view 3D CLM"), std::string::npos) << result.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "report" / "mean-patches-scale0.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "report" / "hidden-landmarks.png"));
+}
+
+// --expert-units: every expert of the model has that many units (a neural field, or the linear
+// expert padded where the field lost on held-out regions), the file is format 3, and `clm3d info`
+// reads it back.
+TEST(TrainCli, NeuralFieldExpertsAreWrittenAsFormat3) {
+  test::TempDir dir;
+  test::writeFile(dir / "tiny.json", kTinyManifest);
+  const auto result = test::runClm3d(
+      "train --dataset " + (dir / "tiny.json").string() + " --out " + (dir / "n.clm3d").string() +
+      " --views-yaw 0 --views-pitch 0 --scales 1 --patch-size 8 --samples 2 --expert-units 3");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const ClmModel model = loadModel(dir / "n.clm3d");
+  int fields = 0;
+  for (const PatchModel& patches : model.views.front().scales) {
+    ASSERT_EQ(patches.experts.size(), patches.landmarks.size());
+    for (const PatchExpert& expert : patches.experts) {
+      EXPECT_EQ(expert.units(), 3);
+      if (expert.alpha.tail(2).cwiseAbs().sum() > 0.0f) ++fields;
+    }
+  }
+  std::cout << "[ " << fields << " experts kept their neural field ]\n";
+  const auto info = test::runClm3d("info " + (dir / "n.clm3d").string());
+  ASSERT_EQ(info.exitCode, 0) << info.output;
+  EXPECT_TRUE(test::contains(info.output, "format version 3")) << info.output;
+  const auto refused =
+      test::runClm3d("train --dataset " + (dir / "tiny.json").string() + " --out " +
+                     (dir / "x.clm3d").string() + " --expert-units 17");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_TRUE(test::contains(refused.output, "--expert-units")) << refused.output;
 }
 
 TEST(TrainCli, SingleViewBaseline) {

@@ -32,9 +32,11 @@ TEST(RlmsOptimiser, FixtureModelHasExperts) {
     for (const PatchModel& patches : view.scales) {
       ASSERT_EQ(patches.experts.size(), patches.landmarks.size());
       for (const PatchExpert& expert : patches.experts) {
+        ASSERT_EQ(expert.units(), 1);  // the fixture trains linear experts
         EXPECT_EQ(expert.weights.size(), patches.patchPixels());
         EXPECT_NEAR(expert.weights.mean(), 0.0f, 1e-5f);
-        EXPECT_GT(expert.gain, 0.0f);  // a higher score means more likely the landmark
+        // A higher score means more likely the landmark: the gain is folded into the filter.
+        EXPECT_GT(expert.alpha[0], 0.0f);
       }
     }
   }
@@ -91,8 +93,7 @@ TEST(RlmsOptimiser, RecoversAPerturbedTurnedHead) {
 }
 
 TEST(RlmsOptimiser, RecoversAHeldOutHead) {
-  const test::RecoveryResult r =
-      test::runRecovery(fitTestModel(), "rlms", 0.0, test::kHeldOutHead);
+  const test::RecoveryResult r = test::runRecovery(fitTestModel(), "rlms", 0.0, test::kHeldOutHead);
   std::cout << "[ rlms held-out head: start " << r.before << " px, end " << r.after << " px ]\n";
   EXPECT_LT(r.after, 0.5 * r.before);
 }

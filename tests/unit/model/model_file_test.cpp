@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "core/common/error.hpp"
 #include "tests/support/test_support.hpp"
@@ -120,7 +124,7 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   std::string newer = good;
   writeU32(newer, 8, 7);
   EXPECT_EQ(parseError(newer),
-            "m.clm3d: format version 7 is newer than this clm3d (2); update clm3d");
+            "m.clm3d: format version 7 is newer than this clm3d (3); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
   EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
@@ -216,20 +220,29 @@ TEST(ModelFile, RejectsInconsistentContentWithAValidChecksum) {
       std::string::npos);
 }
 
-// The tiny model with a patch expert per landmark (random zero-mean weights), its mirrored view
-// rebuilt so it stays the exact mirror image of view 0.
+// The tiny model with a patch expert per landmark (zero-mean weights): three-unit neural fields
+// at scale 0, one-unit logistic experts at scale 1; its mirrored view rebuilt so it stays the
+// exact mirror image of view 0.
 ClmModel tinyModelWithExperts() {
   ClmModel model = test::makeTinyModel();
   float value = 0.25f;
   for (ViewModel& view : model.views) {
-    for (PatchModel& patches : view.scales) {
+    for (std::size_t s = 0; s < view.scales.size(); ++s) {
+      PatchModel& patches = view.scales[s];
+      const int units = s == 0 ? 3 : 1;
       patches.experts.clear();
       for (std::size_t e = 0; e < patches.landmarks.size(); ++e) {
         PatchExpert expert;
-        expert.weights = Eigen::VectorXf::LinSpaced(patches.patchPixels(), -1.0f, value);
-        expert.weights.array() -= expert.weights.mean();
-        expert.gain = 2.0f + value;
-        expert.bias = -value;
+        expert.weights.resize(patches.patchPixels(), units);
+        expert.bias.resize(units);
+        expert.alpha.resize(units);
+        for (int k = 0; k < units; ++k) {
+          expert.weights.col(k) =
+              Eigen::VectorXf::LinSpaced(patches.patchPixels(), -1.0f - k, value);
+          expert.weights.col(k).array() -= expert.weights.col(k).mean();
+          expert.bias[k] = -value + static_cast<float>(k);
+          expert.alpha[k] = 1.0f / static_cast<float>(k + 1);
+        }
         value += 0.125f;
         patches.experts.push_back(expert);
       }
@@ -242,7 +255,7 @@ ClmModel tinyModelWithExperts() {
 TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
   const ClmModel model = tinyModelWithExperts();
   const std::string bytes = serializeModel(model);
-  // The fuzz target's version 2 seed (tests/fuzz/corpus/fuzz_model_file/tiny-experts.clm3d).
+  // The fuzz target's version 3 seed (tests/fuzz/corpus/fuzz_model_file/tiny-experts-v3.clm3d).
   if (const char* corpus = std::getenv("CLM3D_WRITE_EXPERT_MODEL_SEED")) saveModel(model, corpus);
   const ClmModel loaded = parseModel(bytes, "m.clm3d");
   EXPECT_EQ(serializeModel(loaded), bytes);
@@ -257,19 +270,53 @@ TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
       ASSERT_EQ(a.experts.size(), b.experts.size());
       for (std::size_t e = 0; e < a.experts.size(); ++e) {
         EXPECT_EQ(a.experts[e].weights, b.experts[e].weights);
-        EXPECT_EQ(a.experts[e].gain, b.experts[e].gain);
         EXPECT_EQ(a.experts[e].bias, b.experts[e].bias);
+        EXPECT_EQ(a.experts[e].alpha, b.experts[e].alpha);
       }
     }
   }
   // A mirrored view that is not the exact mirror image is stored in full: the reference saved
   // the mirrored view's arrays.
   ClmModel edited = model;
-  edited.views[2].scales[0].experts[0].bias += 1.0f;
+  edited.views[2].scales[0].experts[0].bias[0] += 1.0f;
   const std::string full = serializeModel(edited);
   EXPECT_GT(full.size(), bytes.size() + 4 * 2 * (4 + 4 * 16));
   EXPECT_EQ(parseModel(full, "m.clm3d").views[2].scales[0].experts[0].bias,
             edited.views[2].scales[0].experts[0].bias);
+}
+
+// A file of format version 2 (one linear filter, gain and bias per expert: the fuzz corpus's
+// tiny-experts.clm3d, written by clm3d 0.2) loads as one-unit experts with the gain folded into
+// the filter, so its responses are unchanged, and is written back as version 3.
+TEST(ModelFile, Version2ExpertsLoadAsOneUnit) {
+  const std::filesystem::path file = std::filesystem::path(CLM3D_TEST_FIXTURES) /
+                                     "../fuzz/corpus/fuzz_model_file/tiny-experts.clm3d";
+  std::ifstream in(file, std::ios::binary);
+  ASSERT_TRUE(in) << file;
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 8, 4);
+  ASSERT_EQ(version, 2u);
+  const ClmModel model = parseModel(bytes, file.string());
+  int experts = 0;
+  for (const ViewModel& view : model.views) {
+    for (const PatchModel& patches : view.scales) {
+      for (const PatchExpert& expert : patches.experts) {
+        ASSERT_EQ(expert.units(), 1);
+        EXPECT_EQ(expert.alpha[0], 1.0f);
+        const float score = 0.5f;
+        EXPECT_NEAR(expert.response(&score), 1.0f / (1.0f + std::exp(-(score + expert.bias[0]))),
+                    1e-6f);
+        ++experts;
+      }
+    }
+  }
+  EXPECT_GT(experts, 0);
+  EXPECT_EQ(modelFileVersion(file), 2u);
+  const std::string rewritten = serializeModel(model);
+  std::memcpy(&version, rewritten.data() + 8, 4);
+  EXPECT_EQ(version, kModelFormatVersion);
+  EXPECT_EQ(serializeModel(parseModel(rewritten, "v3.clm3d")), rewritten);
 }
 
 // A file of format version 1 (no experts, every view stored, no "experts" or "mirrorOf" keys)
