@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <utility>
+#include <vector>
 
 #include "core/common/error.hpp"
 #include "tests/support/test_support.hpp"
@@ -250,6 +252,25 @@ ClmModel tinyModelWithExperts() {
   }
   model.views[2] = mirrorView(model.views[0], model.scheme());
   return model;
+}
+
+// A mirrored view stored as a reference has no arrays, so its scales' header entries must say what
+// the rebuilt mirror image is: a misspelt or changed key there is refused, not written back
+// corrected (found by fuzz_model_file; the input is in its corpus, mirrored-scale-key.clm3d).
+TEST(ModelFile, MirroredViewScalesMustMatchTheirMirrorImage) {
+  const std::string good = serializeModel(tinyModelWithExperts());
+  const std::string header = headerOf(good);
+  const auto mirrored = header.find("\"mirrorOf\":0");
+  ASSERT_NE(mirrored, std::string::npos);
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"\"experts\":true", "\"exper|s\":true"}, {"\"modes\":", "\"modes\":1"}}) {
+    std::string edited = header;
+    const auto at = edited.find(from, mirrored);
+    ASSERT_NE(at, std::string::npos);
+    edited.replace(at, from.size(), to);
+    EXPECT_NE(parseError(withHeader(good, edited)).find("views[2].scales"), std::string::npos)
+        << to;
+  }
 }
 
 TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
