@@ -25,8 +25,7 @@ Rgb mixRgb(const Rgb& a, const Rgb& b, double t) {
 class Painter {
  public:
   Painter(const HeadShape& head, const EarShape& ear)
-      : head_(head),
-        ear_(ear),
+      : ear_(ear),
         id_(head.identity()),
         L_(head.layout()),
         noise_(head.identity().detailSeed),
@@ -45,7 +44,6 @@ class Painter {
   void paintMouth(const SurfaceSample& s, Rgb& colour) const;
   void paintHair(const SurfaceSample& s, Rgb& colour) const;
 
-  const HeadShape& head_;
   const EarShape& ear_;
   const HeadIdentity& id_;
   const FaceLayout& L_;
