@@ -46,7 +46,10 @@ if [ "${CLM3D_SKIP_SANITIZERS:-0}" != "1" ]; then
   # release pass runs them, and the tsan pass the threaded training and tracking among them.
   stage "asan tests (unit, ASan+UBSan)" ctest --preset asan -j "$jobs" -L unit -LE slow
 
-  stage "tsan build (threaded tests)" bash -c 'cmake --preset tsan -DCLM3D_WERROR=ON > /dev/null &&
+  # Warnings are not errors here: gcc 12 at -O1 with -fsanitize=thread reports false -Warray-bounds
+  # on std::string concatenations inside libstdc++ (seen in option_table.cpp and manifest_test.cpp).
+  # The release build, with every file, is the warnings gate.
+  stage "tsan build (threaded tests)" bash -c 'cmake --preset tsan -DCLM3D_WERROR=OFF > /dev/null &&
     cmake --build --preset tsan -j "$1" --target clm3d_tsan_tests' _ "$jobs"
   stage "tsan tests (training, loading, tracking)" ctest --preset tsan -j "$jobs"
 fi
