@@ -49,6 +49,11 @@ std::vector<Offset> offsetsFor(std::uint64_t seed, Eigen::Index column,
   return offsets;
 }
 
+// The regression target of a window displaced by `offset`: a Gaussian of the displacement, 1 px SD.
+float targetOf(Offset offset) {
+  return static_cast<float>(std::exp(-0.5 * (offset.dx * offset.dx + offset.dy * offset.dy)));
+}
+
 double sigmoid(double x) {
   return 1.0 / (1.0 + std::exp(-x));
 }
@@ -104,8 +109,7 @@ void trainingWindows(const Eigen::Ref<const Eigen::MatrixXf>& regions,
       auto x = windows.col(i);
       windowAt(regions.col(column).data(), regionSize, patch, settings.radius, offset, x);
       normalisePatch(x);
-      targets[i++] =
-          static_cast<float>(std::exp(-0.5 * (offset.dx * offset.dx + offset.dy * offset.dy)));
+      targets[i++] = targetOf(offset);
     }
   }
 }
@@ -173,13 +177,7 @@ PatchExpert trainNeuralField(const Eigen::Ref<const Eigen::MatrixXf>& regions,
 
   const int units = settings.units;
   const Eigen::Index pixels = windows.rows();
-  PatchExpert expert;
-  expert.weights.resize(pixels, units);
-  expert.bias.resize(units);
-  expert.alpha.resize(units);
-  expert.weights.col(0) = linear.weights.col(0);
-  expert.bias[0] = linear.bias[0];
-  expert.alpha[0] = linear.alpha[0];
+  PatchExpert expert = padded(linear, units);
   SplitMixRandom random(mixKey(settings.seed, 0x6e657572616cULL));
   const float spread = 1.0f / std::sqrt(static_cast<float>(pixels));
   for (int k = 1; k < units; ++k) {
@@ -290,8 +288,7 @@ PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
       auto x = batch.col(filled);
       windowAt(region, regionSize, patch, settings.radius, offset, x);
       normalisePatch(x);
-      const double distance2 = offset.dx * offset.dx + offset.dy * offset.dy;
-      targets[filled] = static_cast<float>(std::exp(-0.5 * distance2));
+      targets[filled] = targetOf(offset);
       if (++filled == kBatch) flush();
     }
   }
