@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "core/common/parallel_for.hpp"
+#include "core/demo/procedural_heads.hpp"
 #include "core/geometry/projection.hpp"
-#include "core/mesh/mesh_export.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/render/projected_landmarks.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -51,23 +51,16 @@ DemoRender renderView(OffscreenRenderer& renderer, const SynthHead& head, const 
 }  // namespace
 
 DemoHeads writeDemoHeads(int count, const fs::path& headsDir, const SynthOptions& options) {
-  const std::vector<std::string> expressions = expressionPresetNames();
-  const Scheme& scheme = Scheme::thesis25();
-  fs::create_directories(headsDir);
   DemoHeads made;
   made.manifest.name = "clm3d-demo-heads";
-  for (int i = 0; i < count; ++i) {
-    const auto seed = static_cast<std::uint64_t>(i + 1);
-    const std::string& expression = expressions[static_cast<std::size_t>(i) % expressions.size()];
-    made.heads.push_back(generateHead(seed, Expression::preset(expression), options));
-    const std::string name = "head-" + std::to_string(seed);
-    const fs::path mesh = headsDir / (name + ".obj");
-    const fs::path landmarks = headsDir / (name + ".ljson");
-    saveObj(made.heads.back().mesh, mesh);
-    writeLandmarks(landmarks, made.heads.back().landmarks, scheme);
-    made.meshFiles.push_back(mesh);
-    made.manifest.scans.push_back({fs::absolute(mesh), fs::absolute(landmarks), name, expression});
-  }
+  writeProceduralHeads(
+      1, count, expressionPresetNames(), options, headsDir,
+      [&made](const WrittenHead& written, SynthHead&& head) {
+        made.heads.push_back(std::move(head));
+        made.meshFiles.push_back(written.mesh);
+        made.manifest.scans.push_back({fs::absolute(written.mesh), fs::absolute(written.landmarks),
+                                       written.mesh.stem().string(), written.expression});
+      });
   return made;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/demo/procedural_heads.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/render/projected_landmarks.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -179,6 +180,47 @@ TEST(ProjectedLandmarks, MissingPointsStayMissingAndHiddenOnesCanBeDropped) {
   EXPECT_EQ(visibleOnly.presentCount(),
             projected.points.presentCount() - static_cast<int>(projected.hidden.size()));
   for (const int i : projected.hidden) EXPECT_FALSE(visibleOnly.has(i)) << i;
+}
+
+TEST(ProceduralHeads, SeedsInARowWithTheExpressionsInTurnAndTheirTiles) {
+  test::TempDir dir;
+  SynthOptions options;
+  options.textureSize = 256;
+  options.faceStepDegrees = 2.0;
+  std::vector<WrittenHead> written;
+  std::vector<std::size_t> triangles;
+  HeadTiles tiles;
+  writeProceduralHeads(7, 3, {"smile", "neutral"}, options, dir / "out",
+                       [&](const WrittenHead& head, SynthHead&& made) {
+                         written.push_back(head);
+                         triangles.push_back(made.mesh.triangleCount());
+                         if (written.size() == 1) tiles = trainingViewTiles(made, head.seed, 64);
+                       });
+  ASSERT_EQ(written.size(), 3u);
+  const std::vector<std::string> expected{"smile", "neutral", "smile"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(written[i].seed, 7 + i);
+    EXPECT_EQ(written[i].expression, expected[i]);
+    EXPECT_EQ(written[i].mesh, dir / "out" / ("head-" + std::to_string(7 + i) + ".obj"));
+    EXPECT_TRUE(fs::is_regular_file(written[i].mesh));
+    EXPECT_EQ(readLandmarks(written[i].landmarks).size(), 25);
+    EXPECT_GT(triangles[i], 0u);
+  }
+  ASSERT_EQ(tiles.tiles.size(), 15u);
+  ASSERT_EQ(tiles.captions.size(), 15u);
+  EXPECT_EQ(tiles.captions.front(), "#7 y-60 p-30");
+  EXPECT_EQ(tiles.tiles.front().size(), cv::Size(64, 64));
+  // Something drawn in every tile (the background is transparent).
+  for (const cv::Mat& tile : tiles.tiles) {
+    std::vector<cv::Mat> channels;
+    cv::split(tile, channels);
+    EXPECT_GT(cv::countNonZero(channels[3]), 64 * 64 / 10);
+  }
+
+  // A bad expression name is refused before anything is written.
+  EXPECT_THROW(writeProceduralHeads(1, 2, {"smile", "grin"}, options, dir / "bad", {}), InputError);
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+  EXPECT_THROW(writeProceduralHeads(1, 2, {}, options, dir / "none", {}), InputError);
 }
 
 }  // namespace
