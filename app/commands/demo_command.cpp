@@ -133,12 +133,12 @@ void runDemo(const DemoArgs& args) {
 
   // Procedural heads, written as scans with their manifest.
   std::cerr << "demo: generating " << args.heads << " procedural heads\n";
-  const DemoHeads made = writeDemoHeads(args.heads, headsDir);
-  for (std::size_t i = 0; i < made.heads.size(); ++i) {
-    std::cerr << "  head " << i + 1 << " (" << made.manifest.scans[i].expression
-              << "): " << made.heads[i].mesh.triangleCount() << " triangles -> "
-              << made.meshFiles[i].string() << "\n";
-  }
+  const DemoHeads made = writeDemoHeads(
+      args.heads, headsDir, {}, [](const WrittenHead& written, const SynthHead& head) {
+        std::cerr << "  head " << written.seed << " (" << written.expression
+                  << "): " << head.mesh.triangleCount() << " triangles -> " << written.mesh.string()
+                  << "\n";
+      });
 
   // Every head from each of the model's training views, the contact sheet of them, and what the
   // renders show about hidden points.

@@ -107,8 +107,7 @@ void runRender(const RenderArgs& args) {
   Camera camera = Camera::fromVerticalFov(args.size, args.size, args.fov);
   Pose pose = Pose::fromDegrees(args.pitch, args.yaw, args.roll);
   pose.translation = frameMesh(mesh, pose, camera, args.fill);
-  double radius = 0.0;
-  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  const double radius = meshRadius(mesh);
   camera = Camera::fromVerticalFov(args.size, args.size, args.fov,
                                    std::max(0.1, 0.5 * (-pose.translation.z() - radius)),
                                    -pose.translation.z() + 2.0 * radius + 10.0);

@@ -50,16 +50,18 @@ DemoRender renderView(OffscreenRenderer& renderer, const SynthHead& head, const 
 
 }  // namespace
 
-DemoHeads writeDemoHeads(int count, const fs::path& headsDir, const SynthOptions& options) {
+DemoHeads writeDemoHeads(int count, const fs::path& headsDir, const SynthOptions& options,
+                         const std::function<void(const WrittenHead&, const SynthHead&)>& onHead) {
   DemoHeads made;
   made.manifest.name = "clm3d-demo-heads";
   writeProceduralHeads(
       1, count, expressionPresetNames(), options, headsDir,
-      [&made](const WrittenHead& written, SynthHead&& head) {
+      [&made, &onHead](const WrittenHead& written, SynthHead&& head) {
         made.heads.push_back(std::move(head));
         made.meshFiles.push_back(written.mesh);
         made.manifest.scans.push_back({fs::absolute(written.mesh), fs::absolute(written.landmarks),
                                        written.mesh.stem().string(), written.expression});
+        if (onHead) onHead(written, made.heads.back());
       });
   return made;
 }

@@ -11,12 +11,14 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
 #include "core/common/progress.hpp"
 #include "core/dataset/manifest.hpp"
+#include "core/demo/procedural_heads.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/model/clm_model.hpp"
 #include "core/synth/synth_head.hpp"
@@ -38,8 +40,10 @@ struct DemoHeads {
 // Generates `count` procedural heads (`options`: their mesh and texture detail; the demo keeps
 // the defaults) and writes each as headsDir/head-<seed>.obj (+ .mtl, .png) and .ljson
 // (thesis25). Creates headsDir.
-DemoHeads writeDemoHeads(int count, const std::filesystem::path& headsDir,
-                         const SynthOptions& options = {});
+// `onHead` (optional) is called after each head is written, on the calling thread.
+DemoHeads writeDemoHeads(
+    int count, const std::filesystem::path& headsDir, const SynthOptions& options = {},
+    const std::function<void(const WrittenHead&, const SynthHead&)>& onHead = {});
 
 struct DemoRender {
   cv::Mat overlay;          // the render (BGRA) with its landmarks drawn, hollow when hidden
