@@ -103,8 +103,7 @@ RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
   fs::create_directories(real.model.parent_path());
   saveModel(model, real.model);
   std::cout << "demo: trained the real-face model in " << std::setprecision(1)
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() - trainStart).count()
-            << " s: " << real.model.string()
+            << secondsSince(trainStart) << " s: " << real.model.string()
             << "\n  LICENCE: it learnt from LFPW photos, which are for research use only (300-W "
                "terms); the model inherits those terms: do not redistribute it or use it "
                "commercially\n";
