@@ -1,7 +1,7 @@
 // clm3d render: draws a textured mesh offscreen at a given head pose, framed automatically, and
 // writes the image (transparent background), optionally the projected landmarks, the depth map
 // and an overlay of the landmarks. All work is done by core (mesh, render, scheme, geometry,
-// dataset/model_frame).
+// dataset/model_frame, render/projected_landmarks).
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -16,11 +16,11 @@
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
 #include "core/dataset/model_frame.hpp"
-#include "core/geometry/projection.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
 #include "core/render/framing.hpp"
 #include "core/render/offscreen_renderer.hpp"
+#include "core/render/projected_landmarks.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 #include "core/viz/landmark_overlay.hpp"
@@ -107,8 +107,7 @@ void runRender(const RenderArgs& args) {
   Camera camera = Camera::fromVerticalFov(args.size, args.size, args.fov);
   Pose pose = Pose::fromDegrees(args.pitch, args.yaw, args.roll);
   pose.translation = frameMesh(mesh, pose, camera, args.fill);
-  double radius = 0.0;
-  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  const double radius = meshRadius(mesh);
   camera = Camera::fromVerticalFov(args.size, args.size, args.fov,
                                    std::max(0.1, 0.5 * (-pose.translation.z() - radius)),
                                    -pose.translation.z() + 2.0 * radius + 10.0);
@@ -124,33 +123,19 @@ void runRender(const RenderArgs& args) {
   if (!args.outDepth.empty()) writeImage(args.outDepth, result.depthZeroBackground());
 
   if (landmarks) {
-    const int count = landmarks->points.size();
-    LandmarkSet projected(count, 2);
-    std::vector<bool> visible(static_cast<std::size_t>(count), false);
-    int hidden = 0;
-    for (int i = 0; i < count; ++i) {
-      if (!landmarks->points.has(i)) continue;
-      const Eigen::Vector3d model = landmarks->points.point(i);
-      visible[static_cast<std::size_t>(i)] = result.isVisible(model);
-      hidden += !visible[static_cast<std::size_t>(i)];
-      projected.set(i, Eigen::Vector2d(projectPoint(model, pose, camera)));
-    }
+    const ProjectedLandmarks projected = projectLandmarks(landmarks->points, result, pose, camera);
     if (!args.outLandmarks.empty()) {
-      LandmarkSet written = projected;
-      if (args.hiddenMissing) {
-        for (int i = 0; i < count; ++i) {
-          if (!visible[static_cast<std::size_t>(i)]) written.setMissing(i);
-        }
-      }
-      writeLandmarks(args.outLandmarks, written, *landmarks->scheme);
+      writeLandmarks(args.outLandmarks,
+                     args.hiddenMissing ? visiblePointsOnly(projected) : projected.points,
+                     *landmarks->scheme);
     }
     if (!args.overlay.empty()) {
       cv::Mat overlay = result.bgra.clone();
-      drawLandmarks(overlay, projected, visible, *landmarks->scheme);
+      drawLandmarks(overlay, projected.points, projected.visible, *landmarks->scheme);
       writeImage(args.overlay, overlay);
     }
-    std::cout << "landmarks: " << projected.presentCount() << " projected, " << hidden
-              << " hidden at this pose\n";
+    std::cout << "landmarks: " << projected.points.presentCount() << " projected, "
+              << projected.hidden.size() << " hidden at this pose\n";
   }
   if (level) std::cout << "orientation: levelled on the eyes of the landmarks\n";
   std::cout << "rendered " << args.mesh.filename().string() << " (" << mesh.vertexCount()

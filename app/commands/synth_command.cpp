@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -22,12 +21,11 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt_scope.hpp"
 #include "app/commands/scan_options.hpp"
+#include "core/common/decile_progress.hpp"
 #include "core/common/error.hpp"
 #include "core/dataset/training_subjects.hpp"
 #include "core/eval/photo_sequence.hpp"
 #include "core/eval/synthetic_sequence.hpp"
-#include "core/scheme/ibug68_conversion.hpp"
-#include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -212,32 +210,21 @@ SequenceSettings toSettings(const SynthArgs& args) {
   return settings;
 }
 
-// Progress lines on stderr at every 10%, for sequences of 30 frames or more.
-class DecileProgress {
- public:
-  DecileProgress(int frames, std::chrono::steady_clock::time_point start)
-      : show_(frames >= 30), start_(start) {}
-  void operator()(double fraction, std::string_view stage) {
-    if (!show_) return;
-    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
-    std::lock_guard lock(mutex_);
-    if (decile <= lastDecile_) return;
-    lastDecile_ = decile;
+// Progress lines on stderr at every 10%, for sequences of 30 frames or more, with the time so
+// far and an estimate of what is left.
+DecileProgress stderrProgress(int frames, std::chrono::steady_clock::time_point start) {
+  return DecileProgress([show = frames >= 30, start](int percent, std::string_view stage) {
+    if (!show) return;
     const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double fraction = percent / 100.0;
     std::ostringstream line;
-    line << "synth: " << std::setw(3) << decile * 10 << "% " << stage << ", " << std::fixed
+    line << "synth: " << std::setw(3) << percent << "% " << stage << ", " << std::fixed
          << std::setprecision(1) << seconds << " s";
-    if (fraction < 1.0) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
+    if (percent < 100) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
     std::cerr << line.str() << '\n';
-  }
-
- private:
-  bool show_;
-  std::chrono::steady_clock::time_point start_;
-  std::mutex mutex_;
-  int lastDecile_ = 0;
-};
+  });
+}
 
 // --photo: the photo moving in the image plane, its landmarks moved with it.
 void runPhotoSynth(const SynthArgs& args) {
@@ -262,34 +249,17 @@ void runPhotoSynth(const SynthArgs& args) {
   }
   settings.validate();
   const cv::Mat photo = readImage(args.photo);
-  // 68-point files are converted to the 25; the truth keeps the points with a fixed 68-point
-  // counterpart (not the earlobes, which have none, nor the jaw contour's cheeks and chin sides).
-  const bool ibug68 = readLandmarks(args.landmarks).size() == 68;
-  const LandmarkSet landmarks = readLandmarks(args.landmarks, &Scheme::thesis25());
-  LandmarkSet points(landmarks.size(), 2);
-  for (int i = 0; i < landmarks.size(); ++i) {
-    if (landmarks.has(i) && !(ibug68 && isJawContourPoint(i))) {
-      points.set(i, Eigen::Vector2d(landmarks.point(i).head<2>()));
-    }
-  }
-  try {
-    photoFace(points);
-  } catch (const InputError& e) {
-    throwInputError(args.landmarks, e.what());
-  }
+  const LandmarkSet points = readPhotoPoints(args.landmarks);
 
   const auto start = std::chrono::steady_clock::now();
   InterruptScope interrupt;
-  DecileProgress decile(settings.frames, start);
-  const auto progress = [&decile](double fraction, std::string_view stage) {
-    decile(fraction, stage);
-  };
+  DecileProgress progress = stderrProgress(settings.frames, start);
   const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
   PhotoSequenceSummary summary;
   try {
     summary =
         writePhotoSequence(photo, points, settings, {args.photo.string(), args.landmarks.string()},
-                           files, progress, &interrupt.token());
+                           files, progress.callback(), &interrupt.token());
   } catch (const Cancelled&) {
     throw Error("cancelled, no sequence written");
   }
@@ -343,15 +313,13 @@ void runSynth(const SynthArgs& args) {
   const double loadSeconds = elapsed();
 
   InterruptScope interrupt;
-  DecileProgress decile(frames, std::chrono::steady_clock::now());
-  const auto progress = [&decile](double fraction, std::string_view stage) {
-    decile(fraction, stage);
-  };
+  DecileProgress progress = stderrProgress(frames, std::chrono::steady_clock::now());
   const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
   SequenceSummary summary;
   try {
-    summary = writeSyntheticSequence(subject.mesh, subject.landmarks, Scheme::thesis25(), settings,
-                                     subject.description, files, progress, &interrupt.token());
+    summary =
+        writeSyntheticSequence(subject.mesh, subject.landmarks, Scheme::thesis25(), settings,
+                               subject.description, files, progress.callback(), &interrupt.token());
   } catch (const Cancelled&) {
     throw Error("cancelled, no sequence written");
   }

@@ -1,8 +1,8 @@
 // clm3d synth-head: writes procedural heads with exact landmarks (core/synth) as OBJ + MTL + PNG
 // and LJSON, and optionally a contact sheet of each head from the thesis's 15 training views, so
-// a person can check at a glance that they look like faces.
+// a person can check at a glance that they look like faces. The heads, files and tiles are core's
+// (core/demo/procedural_heads); this file parses the options and prints.
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -11,9 +11,7 @@
 
 #include "app/commands/commands.hpp"
 #include "core/common/error.hpp"
-#include "core/mesh/mesh_export.hpp"
-#include "core/render/view_tiles.hpp"
-#include "core/scheme/landmark_file.hpp"
+#include "core/demo/procedural_heads.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/viz/contact_sheet.hpp"
 #include "core/viz/image_file.hpp"
@@ -22,8 +20,6 @@ namespace clm3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-const Eigen::Vector3d kHeadPivot(0.0, -45.0, -60.0);  // about the middle of the head and neck
 
 struct SynthHeadArgs {
   std::uint64_t seed = 1;
@@ -49,38 +45,21 @@ std::vector<std::string> splitNames(const std::string& text) {
 }
 
 void runSynthHead(const SynthHeadArgs& args) {
-  const std::vector<std::string> names = splitNames(args.expression);
-  std::vector<Expression> expressions;
-  for (const auto& name : names) expressions.push_back(Expression::preset(name));
   SynthOptions options;
   options.textureSize = args.textureSize;
   options.faceStepDegrees = args.faceStep;
-  options.validate();
-  fs::create_directories(args.out);
   std::vector<cv::Mat> tiles;
   std::vector<std::string> captions;
-  const std::vector<ViewAngles> views = trainingViewAngles();
-  for (int i = 0; i < args.count; ++i) {
-    const std::uint64_t seed = args.seed + static_cast<std::uint64_t>(i);
-    const std::size_t which = static_cast<std::size_t>(i) % expressions.size();
-    const SynthHead head = generateHead(seed, expressions[which], options);
-    const fs::path stem = args.out / ("head-" + std::to_string(seed));
-    saveObj(head.mesh, stem.string() + ".obj");
-    writeLandmarks(stem.string() + ".ljson", head.landmarks, Scheme::thesis25());
-    std::cout << stem.string() << ".obj: " << head.mesh.triangleCount() << " triangles, "
-              << names[which] << '\n';
-    if (!args.contactSheet.empty()) {
-      // Framed on the whole head, turned about the middle of the head and neck.
-      for (cv::Mat& tile : renderTilesAboutPivot(head.mesh, views, args.tileSize, kHeadPivot)) {
-        tiles.push_back(tile);
-      }
-      for (const ViewAngles& view : views) {
-        captions.push_back("#" + std::to_string(seed) + " y" +
-                           std::to_string(std::lround(view.yawDeg)) + " p" +
-                           std::to_string(std::lround(view.pitchDeg)));
-      }
-    }
-  }
+  writeProceduralHeads(args.seed, args.count, splitNames(args.expression), options, args.out,
+                       [&](const WrittenHead& written, SynthHead&& head) {
+                         std::cout << written.mesh.string() << ": " << head.mesh.triangleCount()
+                                   << " triangles, " << written.expression << '\n';
+                         if (args.contactSheet.empty()) return;
+                         HeadTiles made = trainingViewTiles(head, written.seed, args.tileSize);
+                         tiles.insert(tiles.end(), made.tiles.begin(), made.tiles.end());
+                         captions.insert(captions.end(), made.captions.begin(),
+                                         made.captions.end());
+                       });
   if (!args.contactSheet.empty()) {
     writeImage(args.contactSheet, makeContactSheet(tiles, 5, captions));
     std::cout << args.contactSheet.string() << ": " << tiles.size() << " views\n";

@@ -5,10 +5,14 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
+#include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/json_fields.hpp"
 #include "core/fit/shape_projector.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -178,42 +182,83 @@ BoxCalibration CalibrationSet::get(DetectorKind detector, bool profile) const {
   return it != overrides.end() ? it->second : boxCalibration(detector, profile);
 }
 
+namespace {
+
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+// A report's number that is null when nothing was measured (see number() above): nullopt then.
+std::optional<double> optionalNumber(JsonFields& fields, std::string_view key) {
+  const JsonValue* value = fields.find(key);
+  if (value == nullptr || value->is_null()) return std::nullopt;
+  return fields.number(key, -kHuge, kHuge);
+}
+
+// One detector's frontal or profile calibration, when it measured faces.
+std::optional<BoxCalibration> readCalibration(JsonFields& calibration, DetectorKind kind,
+                                              bool profile) {
+  const char* key = profile ? "profile" : "frontal";
+  if (!calibration.has(key)) return std::nullopt;
+  JsonFields c = calibration.object(key);
+  c.allow({"sd_iod_per_width", "sd_eye_offset_x", "sd_eye_offset_y"});
+  if (profile) c.allow({"yaw_deg"});
+  const long long faces = c.integer("faces", 0, std::numeric_limits<int>::max());
+  const std::optional<double> iodPerWidth = optionalNumber(c, "iod_per_width");
+  const std::optional<double> offsetX = optionalNumber(c, "eye_offset_x");
+  const std::optional<double> offsetY = optionalNumber(c, "eye_offset_y");
+  const std::optional<double> yaw = profile ? optionalNumber(c, "yaw_deg") : std::nullopt;
+  c.rejectUnknown();
+  if (faces <= 0 || !iodPerWidth) return std::nullopt;
+  if (!(*iodPerWidth > 0.0)) c.fail(c.name("iod_per_width"), "must be > 0");
+  if (!offsetX) c.fail(c.name("eye_offset_x"), "missing (required with iod_per_width)");
+  if (!offsetY) c.fail(c.name("eye_offset_y"), "missing (required with iod_per_width)");
+  BoxCalibration b = boxCalibration(kind, profile);
+  b.iodPerWidth = *iodPerWidth;
+  b.eyeOffsetX = *offsetX;
+  b.eyeOffsetY = *offsetY;
+  if (yaw) b.yawDeg = *yaw;
+  return b;
+}
+
+}  // namespace
+
 CalibrationSet readCalibrationSet(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throwInputError(path, "cannot be read");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    throwInputError(path, std::string("not JSON: ") + e.what());
-  }
-  CalibrationSet set;
-  set.label = path.filename().string();
-  if (!j.is_object() || !j.contains("detectors") || !j["detectors"].is_array()) {
+  const std::string source = path.string();
+  const JsonValue root = parseJsonText(readTextFile(path), source);
+  if (!root.is_object() || !root.contains("detectors")) {
     throwInputError(path, "not a `clm3d detect` report (no \"detectors\" list)");
   }
-  try {
-    for (const json& d : j["detectors"]) {
-      if (!d.contains("calibration")) continue;
-      const DetectorKind kind = parseDetectorKind(d.at("detector").get<std::string>());
-      for (const bool profile : {false, true}) {
-        const char* key = profile ? "profile" : "frontal";
-        if (!d["calibration"].contains(key)) continue;
-        const json& c = d["calibration"][key];
-        if (c.at("faces").get<int>() <= 0 || c.at("iod_per_width").is_null()) continue;
-        BoxCalibration b = boxCalibration(kind, profile);
-        b.iodPerWidth = c.at("iod_per_width").get<double>();
-        b.eyeOffsetX = c.at("eye_offset_x").get<double>();
-        b.eyeOffsetY = c.at("eye_offset_y").get<double>();
-        if (profile && c.contains("yaw_deg") && c["yaw_deg"].is_number()) {
-          b.yawDeg = c["yaw_deg"].get<double>();
-        }
-        if (!(b.iodPerWidth > 0.0)) throwInputError(path, "iod_per_width must be > 0");
-        set.overrides[{kind, profile}] = b;
-      }
+  JsonFields report(root, source);
+  if (report.has("settings")) {
+    // Written with the report; only checked here (the calibrations do not depend on them).
+    JsonFields settings = report.object("settings");
+    settings.allow({"min_face_size", "max_image_side", "cascade_profiles", "frontal_yaw_deg",
+                    "calibration_target", "vertical_fov_deg", "with_model"});
+    settings.rejectUnknown();
+  }
+  const JsonValue& detectors = report.array("detectors");
+  report.rejectUnknown();
+  CalibrationSet set;
+  set.label = path.filename().string();
+  for (std::size_t i = 0; i < detectors.size(); ++i) {
+    JsonFields d(detectors[i], source, report.name("detectors") + "[" + std::to_string(i) + "]");
+    d.allow({"images", "found", "no_face", "wrong_face", "median_ms", "p90_ms", "start_error"});
+    const std::string name = d.requiredString("detector");
+    DetectorKind kind{};
+    try {
+      kind = parseDetectorKind(name);
+    } catch (const InputError& e) {
+      d.fail(d.name("detector"), e.what());
     }
-  } catch (const json::exception& e) {
-    throwInputError(path, std::string("bad calibration entry: ") + e.what());
+    if (d.has("calibration")) {
+      JsonFields calibration = d.object("calibration");
+      for (const bool profile : {false, true}) {
+        if (const auto b = readCalibration(calibration, kind, profile)) {
+          set.overrides[{kind, profile}] = *b;
+        }
+      }
+      calibration.rejectUnknown();
+    }
+    d.rejectUnknown();
   }
   if (set.overrides.empty()) throwInputError(path, "holds no measured calibration");
   return set;

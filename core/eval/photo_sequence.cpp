@@ -13,6 +13,8 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/common/split_mix_random.hpp"
+#include "core/scheme/ibug68_conversion.hpp"
+#include "core/scheme/landmark_file.hpp"
 #include "core/video/video_writer.hpp"
 
 namespace clm3d {
@@ -130,6 +132,23 @@ PhotoFace photoFace(const LandmarkSet& points) {
   face.size = (high - low).maxCoeff();
   if (!(face.size > 1e-6)) throw InputError("the points all lie on one spot");
   return face;
+}
+
+LandmarkSet readPhotoPoints(const std::filesystem::path& landmarksFile) {
+  const bool ibug68 = readLandmarks(landmarksFile).size() == 68;
+  const LandmarkSet landmarks = readLandmarks(landmarksFile, &Scheme::thesis25());
+  LandmarkSet points(landmarks.size(), 2);
+  for (int i = 0; i < landmarks.size(); ++i) {
+    if (landmarks.has(i) && !(ibug68 && isJawContourPoint(i))) {
+      points.set(i, Eigen::Vector2d(landmarks.point(i).head<2>()));
+    }
+  }
+  try {
+    photoFace(points);
+  } catch (const InputError& e) {
+    throwInputError(landmarksFile, e.what());
+  }
+  return points;
 }
 
 cv::Matx23d photoTransform(const PhotoMotion& motion, const Eigen::Vector2d& faceCentre,

@@ -65,6 +65,12 @@ struct PhotoFace {
 };
 PhotoFace photoFace(const LandmarkSet& points);
 
+// A photo's points for the sequence from `landmarksFile` (.pts/.ljson/.csv), 2D in the thesis25
+// scheme: a 68-point file is converted and keeps only the points with a fixed 68-point
+// counterpart (not the earlobes, which have none, nor the jaw contour's cheeks and chin sides).
+// Throws InputError naming the file for a file that cannot be read or points photoFace refuses.
+LandmarkSet readPhotoPoints(const std::filesystem::path& landmarksFile);
+
 // The 2x3 affine from photo pixels to frame pixels (OpenCV convention, pixel centres at
 // integers): p -> s R (p - c) + c + o + (dx, dy), with c the face centre and o the shift that
 // centres the photo in a frame of another size ((frame - photo) / 2, in whole pixels).

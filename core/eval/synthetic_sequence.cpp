@@ -11,6 +11,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
+#include "core/render/framing.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/video/video_writer.hpp"
 #include "core/viz/image_file.hpp"
@@ -204,8 +205,7 @@ SequenceRenderer::SequenceRenderer(const TexturedMesh& mesh, const LandmarkSet& 
     depth = (depth - eyeZ) * measured / settings.interOcularPixels + eyeZ;
   }
   d.translation = Eigen::Vector3d(0.0 - centroid.x(), 0.0 - centroid.y(), -depth);
-  double radius = 0.0;
-  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  const double radius = meshRadius(mesh);
   require(depth - std::max(0.0, eyeZ) > 20.0,
           "the face is too large for the field of view: the camera would be inside the head "
           "(use a smaller face size or a wider field of view)");

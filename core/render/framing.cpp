@@ -9,12 +9,17 @@
 
 namespace clm3d {
 
+double meshRadius(const TexturedMesh& mesh, const Eigen::Vector3d& about) {
+  double radius = 0.0;
+  for (const auto& p : mesh.positions) radius = std::max(radius, (p.cast<double>() - about).norm());
+  return radius;
+}
+
 // A few fixed-point steps: perspective makes the span slightly non-linear in the distance.
 Eigen::Vector3d frameMesh(const TexturedMesh& mesh, const Pose& rotation, const Camera& camera,
                           double fill) {
   const std::size_t stride = std::max<std::size_t>(1, mesh.vertexCount() / 20000);
-  double radius = 0.0;
-  for (const auto& p : mesh.positions) radius = std::max(radius, p.cast<double>().norm());
+  const double radius = meshRadius(mesh);
   if (!(radius > 0.0)) throw Error("framing: the mesh has no extent");
   Eigen::Vector3d translation(0.0, 0.0, distanceToFit(radius, camera, fill) - radius);
   for (int iteration = 0; iteration < 8; ++iteration) {

@@ -11,6 +11,10 @@
 
 namespace clm3d {
 
+// The distance from `about` (model coordinates) to the mesh's farthest vertex: the radius of the
+// sphere that holds the mesh, for framing and for a camera's clipping planes. 0 for no vertices.
+double meshRadius(const TexturedMesh& mesh, const Eigen::Vector3d& about = Eigen::Vector3d::Zero());
+
 // The translation (eye coordinates) for `rotation`'s angles and scale that centres the mesh's
 // projection and makes its larger side span `fill` of the image; never so close that part of the
 // mesh is behind the camera. Throws Error for a mesh without extent.

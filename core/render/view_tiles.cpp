@@ -25,11 +25,7 @@ std::vector<ViewAngles> trainingViewAngles() {
 std::vector<cv::Mat> renderTilesAboutPivot(const TexturedMesh& mesh,
                                            const std::vector<ViewAngles>& angles, int size,
                                            const Eigen::Vector3d& pivot, double radius) {
-  if (radius <= 0.0) {
-    for (const auto& p : mesh.positions) {
-      radius = std::max(radius, (p.cast<double>() - pivot).norm());
-    }
-  }
+  if (radius <= 0.0) radius = meshRadius(mesh, pivot);
   OffscreenRenderer renderer(mesh, RenderOptions{kTileSupersample});
   std::vector<cv::Mat> tiles;
   for (const ViewAngles& view : angles) {

@@ -253,6 +253,55 @@ TEST(DetectorEvaluation, ErrorsNameTheFile) {
   }
 }
 
+// A `clm3d detect --calibrate` report as the command writes it, with `extra` spliced into the
+// object named by `where` ("root", "detector", "frontal").
+std::string calibrationReport(const std::string& where, const std::string& extra) {
+  const auto at = [&](const char* place) { return where == place ? extra : std::string(); };
+  return "{" + at("root") +
+         "\"settings\": {\"min_face_size\": 40, \"max_image_side\": 1600, "
+         "\"cascade_profiles\": true, \"frontal_yaw_deg\": 20.0, \"calibration_target\": "
+         "\"eyes\", \"vertical_fov_deg\": 40.0, \"with_model\": false},"
+         "\"detectors\": [{" +
+         at("detector") +
+         "\"detector\": \"cascade\", \"images\": 4, \"found\": 4, \"no_face\": 0, "
+         "\"wrong_face\": 0, \"median_ms\": 3.5, \"p90_ms\": 4.0, \"calibration\": {"
+         "\"frontal\": {" +
+         at("frontal") +
+         "\"faces\": 4, \"iod_per_width\": 0.41, \"eye_offset_x\": 0.01, "
+         "\"eye_offset_y\": -0.12, \"sd_iod_per_width\": 0.01, \"sd_eye_offset_x\": 0.0, "
+         "\"sd_eye_offset_y\": 0.02},"
+         "\"profile\": {\"faces\": 0, \"iod_per_width\": null, \"eye_offset_x\": null, "
+         "\"eye_offset_y\": null, \"sd_iod_per_width\": null, \"sd_eye_offset_x\": null, "
+         "\"sd_eye_offset_y\": null, \"yaw_deg\": null}}}]}";
+}
+
+TEST(DetectorEvaluation, CalibrationReportRejectsAnUnknownKeyNamingFileAndKey) {
+  test::TempDir dir;
+  test::writeFile(dir / "report.json", calibrationReport("", ""));
+  const CalibrationSet set = readCalibrationSet(dir / "report.json");
+  EXPECT_EQ(set.label, "report.json");
+  ASSERT_EQ(set.overrides.size(), 1u);  // the profile boxes measured no face
+  EXPECT_DOUBLE_EQ(set.get(DetectorKind::Cascade, false).iodPerWidth, 0.41);
+  EXPECT_DOUBLE_EQ(set.get(DetectorKind::Cascade, false).eyeOffsetY, -0.12);
+  EXPECT_DOUBLE_EQ(set.get(DetectorKind::Cascade, true).iodPerWidth,
+                   boxCalibration(DetectorKind::Cascade, true).iodPerWidth);
+
+  for (const auto& [where, key] : std::vector<std::pair<std::string, std::string>>{
+           {"root", "detectorz"}, {"detector", "founds"}, {"frontal", "iod_per_widht"}}) {
+    const fs::path file = dir / ("misspelt-" + where + ".json");
+    test::writeFile(file, calibrationReport(where, "\"" + key + "\": 1, "));
+    try {
+      readCalibrationSet(file);
+      FAIL() << "no error for the unknown key " << key;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+      EXPECT_NE(message.find(key), std::string::npos) << message;
+      EXPECT_NE(message.find("unknown field"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(DetectorEvaluation, LfpwPhotosWhenPresent) {
   CLM3D_REQUIRE_SHARED_DATA(data);
   const fs::path folder = data / "photos/lfpw/test";

@@ -33,5 +33,14 @@ TEST(Framing, RejectsAMeshWithoutExtent) {
   EXPECT_THROW(frameMesh(mesh, Pose{}, Camera::fromVerticalFov(64, 64, 30.0), 0.8), Error);
 }
 
+TEST(Framing, MeshRadiusIsTheFarthestVertexFromThePoint) {
+  TexturedMesh mesh;
+  EXPECT_EQ(meshRadius(mesh), 0.0);
+  mesh.positions = {Eigen::Vector3f(3, 4, 0), Eigen::Vector3f(0, 0, -12), Eigen::Vector3f(1, 1, 0)};
+  EXPECT_DOUBLE_EQ(meshRadius(mesh), 12.0);
+  EXPECT_DOUBLE_EQ(meshRadius(mesh, Eigen::Vector3d(0, 0, 1)), 13.0);
+  EXPECT_DOUBLE_EQ(meshRadius(mesh, Eigen::Vector3d(0, 0, -12)), 13.0);  // to (3, 4, 0)
+}
+
 }  // namespace
 }  // namespace clm3d
