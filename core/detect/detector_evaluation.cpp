@@ -231,8 +231,9 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
   if (report.has("settings")) {
     // Written with the report; only checked here (the calibrations do not depend on them).
     JsonFields settings = report.object("settings");
-    settings.allow({"min_face_size", "max_image_side", "cascade_profiles", "frontal_yaw_deg",
-                    "calibration_target", "vertical_fov_deg", "with_model"});
+    settings.allow({"min_face_size", "max_image_side", "cascade_profiles",
+                    "cascade_profiles_everywhere", "frontal_yaw_deg", "calibration_target",
+                    "vertical_fov_deg", "with_model"});
     settings.rejectUnknown();
   }
   const JsonValue& detectors = report.array("detectors");
