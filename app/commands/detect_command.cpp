@@ -112,8 +112,13 @@ void addDetectCommand(CLI::App& root) {
                    "search images reduced to this larger side (0 = full size)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100000));
-  command->add_flag("!--no-profiles", args->settings.detector.profiles,
-                    "cascade: frontal cascade only");
+  CLI::Option* noProfiles = command->add_flag("!--no-profiles", args->settings.detector.profiles,
+                                              "cascade: frontal cascade only");
+  command
+      ->add_flag("--profiles-everywhere", args->settings.detector.profilesEverywhere,
+                 "cascade: run the profile cascade over the whole image even where the frontal "
+                 "cascade found faces (default: only around them)")
+      ->excludes(noProfiles);
   command->add_flag("--calibrate", args->calibrate,
                     "report the box calibration measured on the photos (medians)");
   command

@@ -231,8 +231,9 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
   if (report.has("settings")) {
     // Written with the report; only checked here (the calibrations do not depend on them).
     JsonFields settings = report.object("settings");
-    settings.allow({"min_face_size", "max_image_side", "cascade_profiles", "frontal_yaw_deg",
-                    "calibration_target", "vertical_fov_deg", "with_model"});
+    settings.allow({"min_face_size", "max_image_side", "cascade_profiles",
+                    "cascade_profiles_everywhere", "frontal_yaw_deg", "calibration_target",
+                    "vertical_fov_deg", "with_model"});
     settings.rejectUnknown();
   }
   const JsonValue& detectors = report.array("detectors");
@@ -422,7 +423,10 @@ std::string formatDetectorEvaluationText(const DetectorEvaluationReport& report,
   const FaceDetectorSettings& s = report.settings.detector;
   out << "detector settings: minFaceSize " << s.minFaceSize << ", maxImageSide " << s.maxImageSide
       << (s.maxImageSide > 0 ? "" : " (off)") << ", cascade profiles "
-      << (s.profiles ? "on" : "off") << '\n';
+      << (!s.profiles            ? "off"
+          : s.profilesEverywhere ? "on, everywhere"
+                                 : "on, around frontal faces")
+      << '\n';
   out << "detector | images | found | no face | wrong face | median ms | p90 ms\n";
   out << std::fixed;
   for (const DetectorEvaluation& e : report.detectors) {
@@ -480,6 +484,7 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
       {"min_face_size", s.minFaceSize},
       {"max_image_side", s.maxImageSide},
       {"cascade_profiles", s.profiles},
+      {"cascade_profiles_everywhere", s.profilesEverywhere},
       {"frontal_yaw_deg", report.settings.frontalYawDeg},
       {"calibration_target",
        report.settings.calibrationTarget == CalibrationTarget::MeanShape ? "mean-shape" : "eyes"},

@@ -148,24 +148,65 @@ struct FaceDetector::Impl {
   cv::CascadeClassifier profile;
   std::unique_ptr<detail::DlibHogDetector> hog;  // loaded only for DlibHog
 
-  void runCascade(cv::CascadeClassifier& cascade, const cv::Mat& grey,
-                  const FaceDetectorSettings& settings, bool isProfile, bool mirror,
-                  std::vector<FaceBox>& out) const {
+  // Runs `cascade` over `region` of `grey` (its mirror image when `mirror`) for boxes with sides
+  // from minSide to maxSide (0: no limit) and appends them in `grey`'s pixels.
+  void runCascade(cv::CascadeClassifier& cascade, const cv::Mat& grey, const cv::Rect& region,
+                  int minSide, int maxSide, const FaceDetectorSettings& settings, bool isProfile,
+                  bool mirror, std::vector<FaceBox>& out) const {
+    if (region.width < minSide || region.height < minSide) return;
+    cv::Mat searched = grey(region);
+    if (mirror) {
+      cv::Mat flipped;
+      cv::flip(searched, flipped, 1);
+      searched = flipped;
+    }
     std::vector<cv::Rect> found;
     std::vector<int> neighbours;
-    const cv::Size minSize(settings.minFaceSize, settings.minFaceSize);
-    cascade.detectMultiScale(grey, found, neighbours, settings.scaleFactor, settings.minNeighbours,
-                             0, minSize);
+    cascade.detectMultiScale(searched, found, neighbours, settings.scaleFactor,
+                             settings.minNeighbours, 0, cv::Size(minSide, minSide),
+                             cv::Size(maxSide, maxSide));
     for (std::size_t i = 0; i < found.size(); ++i) {
       FaceBox face;
       cv::Rect2d box(found[i]);
-      if (mirror) box.x = grey.cols - box.x - box.width;
+      if (mirror) box.x = region.width - box.x - box.width;
+      box.x += region.x;
+      box.y += region.y;
       face.box = box;
       face.score = i < neighbours.size() ? neighbours[i] : settings.minNeighbours;
       face.profile = isProfile;
       face.mirrored = mirror;
       face.detector = DetectorKind::Cascade;
       out.push_back(face);
+    }
+  }
+
+  // The profile passes (image and mirror) over the whole image, or around each frontal box.
+  void runProfiles(const cv::Mat& grey, const FaceDetectorSettings& settings,
+                   std::vector<FaceBox>& boxes) {
+    const cv::Rect whole(0, 0, grey.cols, grey.rows);
+    std::vector<cv::Rect> regions;
+    std::vector<cv::Size> sides;  // min, max side per region
+    if (settings.profilesEverywhere || boxes.empty()) {
+      regions.push_back(whole);
+      sides.emplace_back(settings.minFaceSize, 0);
+    } else {
+      for (const FaceBox& face : boxes) {
+        const double side = std::max(face.box.width, face.box.height);
+        const double margin = FaceDetectorSettings::kProfileMargin * side;
+        const cv::Rect grown(static_cast<int>(std::floor(face.box.x - margin)),
+                             static_cast<int>(std::floor(face.box.y - margin)),
+                             static_cast<int>(std::ceil(face.box.width + 2 * margin)),
+                             static_cast<int>(std::ceil(face.box.height + 2 * margin)));
+        regions.push_back(grown & whole);
+        sides.emplace_back(std::max(settings.minFaceSize, static_cast<int>(side / 2)),
+                           static_cast<int>(std::ceil(side * 2)));
+      }
+    }
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      for (const bool mirror : {false, true}) {
+        runCascade(profile, grey, regions[r], sides[r].width, sides[r].height, settings, true,
+                   mirror, boxes);
+      }
     }
   }
 };
@@ -214,13 +255,9 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
   std::vector<FaceBox> boxes;
   if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return boxes;
   if (kind_ == DetectorKind::Cascade) {
-    impl_->runCascade(impl_->frontal, grey, settings, false, false, boxes);
-    if (settings.profiles) {
-      impl_->runCascade(impl_->profile, grey, settings, true, false, boxes);
-      cv::Mat flipped;
-      cv::flip(grey, flipped, 1);
-      impl_->runCascade(impl_->profile, flipped, settings, true, true, boxes);
-    }
+    impl_->runCascade(impl_->frontal, grey, cv::Rect(0, 0, grey.cols, grey.rows),
+                      settings.minFaceSize, 0, settings, false, false, boxes);
+    if (settings.profiles) impl_->runProfiles(grey, settings, boxes);
   } else {
     impl_->hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, boxes);
   }

@@ -1,6 +1,7 @@
 // Face detection for the start of a search when there is no previous frame: OpenCV's Viola-Jones
 // cascades (a frontal cascade plus the profile cascade run on the image and on its mirror, since
-// OpenCV's profile cascade finds faces turned one way only) or dlib's HOG detector when dlib was
+// OpenCV's profile cascade finds faces turned one way only; around the frontal faces, or over the
+// whole image when there are none) or dlib's HOG detector when dlib was
 // found at build time. One place that finds the cascade files, merges overlapping boxes and ranks
 // them, so the CLI, the GUI and the tests start from the same boxes (docs/initialisation.md).
 #pragma once
@@ -33,11 +34,20 @@ struct FaceBox {
 };
 
 struct FaceDetectorSettings {
+  static constexpr double kProfileMargin = 0.5;
+
   int minFaceSize = 48;  // pixels: the smallest box side searched (dlib: < 64 doubles the image)
   double scaleFactor = 1.1;  // cascade: step between pyramid scales (> 1)
   int minNeighbours = 3;     // cascade: raw detections a box needs (>= 1)
   bool profiles = true;      // cascade: also run the profile cascade, on the image and its mirror
-  bool equalise = true;      // histogram equalisation of the grey image before detecting
+  // cascade: where the profile passes look. false (default): over the whole image only when the
+  // frontal cascade found nothing, else around each frontal box (the box grown by
+  // kProfileMargin of its side each way, boxes from half to twice its side): a head turned
+  // 30-60 degrees that the frontal cascade also finds still gets its profile box, and the whole
+  // detector costs a third of what it did on photos. true: over the whole image always (also
+  // finds a head turned too far for the frontal cascade beside a face it finds).
+  bool profilesEverywhere = false;
+  bool equalise = true;  // histogram equalisation of the grey image before detecting
   // > 0: images whose larger side exceeds this are searched reduced to it (faster on large
   // photos and HD video; faces below max(24, minFaceSize x reduction) reduced pixels are missed)
   int maxImageSide = 0;

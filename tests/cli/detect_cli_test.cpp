@@ -40,6 +40,21 @@ TEST(DetectCli, CountsAnImageWithoutAFaceAndWritesJson) {
   ASSERT_EQ(report["detectors"].size(), 1u);
   EXPECT_EQ(report["detectors"][0]["no_face"], 1);
   EXPECT_EQ(report["detectors"][0]["calibration"]["frontal"]["faces"], 0);
+  EXPECT_EQ(report["settings"]["cascade_profiles_everywhere"], false);
+  EXPECT_TRUE(test::contains(result.output, "profiles on, around frontal faces")) << result.output;
+
+  // --profiles-everywhere: the profile passes over the whole image, recorded in the report.
+  const auto everywhere =
+      runClm3d("detect --images " + dir.path().string() +
+               " --detector cascade --profiles-everywhere --quiet --out " + out.string());
+  ASSERT_EQ(everywhere.exitCode, 0) << everywhere.output;
+  EXPECT_TRUE(test::contains(everywhere.output, "profiles on, everywhere")) << everywhere.output;
+  EXPECT_EQ(nlohmann::json::parse(test::readFile(out))["settings"]["cascade_profiles_everywhere"],
+            true);
+  EXPECT_EQ(
+      runClm3d("detect --images " + dir.path().string() + " --no-profiles --profiles-everywhere")
+          .exitCode,
+      2);
 }
 
 TEST(DetectCli, ErrorsNameTheFile) {

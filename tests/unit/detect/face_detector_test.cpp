@@ -1,11 +1,12 @@
 // Tests of core/detect/face_detector and initialiseFromImage: box overlap and suppression, cascade
 // files that are missing, blank images, a rendered procedural head found (frontal and profile, the
-// profile's side from `mirrored`) with stateFromBox's points near the truth, and dlib's detector
-// when the build has it.
+// profile's side from `mirrored`) with stateFromBox's points near the truth, the profile passes
+// around each frontal face, and dlib's detector when the build has it.
 #include "core/detect/face_detector.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/detect/initialisation.hpp"
@@ -139,6 +140,42 @@ TEST(FaceDetector, ProfileCascadeSaysWhichWayTheHeadTurns) {
     const FitState start = stateFromBox(model, test::sceneCamera(), best);
     EXPECT_GT(start.pose.yaw * yaw, 0.0) << "yaw " << yaw;
     EXPECT_LT(startError(model, scene, start), 0.3) << "yaw " << yaw;
+  }
+}
+
+// Where the frontal cascade finds faces, the profile passes search only around them: with a
+// frontal head and a head turned +50 degrees side by side, each keeps its own kind of box (the
+// turned one its mirrored profile box, found in the region of its weaker frontal box), as when
+// the profile passes search the whole image.
+TEST(FaceDetector, ProfilePassesSearchAroundEachFrontalFace) {
+  const test::Scene frontal = heldOutScene(0.0);
+  const test::Scene turned = heldOutScene(50.0);
+  // The middle 320 columns of each 640x480 frame, side by side.
+  const int from = 170;
+  const int width = 320;
+  cv::Mat pair(frontal.bgr.rows, 2 * width, CV_8UC3);
+  frontal.bgr.colRange(from, from + width).copyTo(pair.colRange(0, width));
+  turned.bgr.colRange(from, from + width).copyTo(pair.colRange(width, 2 * width));
+  const cv::Point2d frontalEyes(frontal.eyeMid.x() - from, frontal.eyeMid.y());
+  const cv::Point2d turnedEyes(turned.eyeMid.x() - from + width, turned.eyeMid.y());
+
+  for (const bool everywhere : {false, true}) {
+    FaceDetectorSettings settings;
+    settings.profilesEverywhere = everywhere;
+    FaceDetector detector(DetectorKind::Cascade, settings);
+    const std::vector<FaceBox> faces = detector.detect(pair);
+    const auto at = [&faces](const cv::Point2d& eyes) {
+      const auto it = std::find_if(faces.begin(), faces.end(),
+                                   [&eyes](const FaceBox& f) { return f.box.contains(eyes); });
+      return it == faces.end() ? nullptr : &*it;
+    };
+    const FaceBox* left = at(frontalEyes);
+    const FaceBox* right = at(turnedEyes);
+    ASSERT_NE(left, nullptr) << "everywhere " << everywhere;
+    ASSERT_NE(right, nullptr) << "everywhere " << everywhere;
+    EXPECT_FALSE(left->profile) << "everywhere " << everywhere;
+    EXPECT_TRUE(right->profile) << "everywhere " << everywhere;
+    EXPECT_TRUE(right->mirrored) << "everywhere " << everywhere;
   }
 }
 
