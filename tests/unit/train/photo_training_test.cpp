@@ -173,6 +173,11 @@ TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
     }
   }
   EXPECT_NO_THROW(model.validate());
+  // The point refiner learnt from the photos: every point is marked in both, so all 25 are refined.
+  EXPECT_EQ(model.refiner.stages.size(), static_cast<std::size_t>(s.refinerStages));
+  EXPECT_EQ(model.refiner.landmarks.size(), 25u);
+  s.refinerStages = 0;
+  EXPECT_TRUE(trainFromManifest(fixture.manifest, s, "test").refiner.empty());
 }
 
 TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
