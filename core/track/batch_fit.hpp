@@ -42,6 +42,8 @@ struct ImageFitSettings {
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
   double startOffset = 0.0;
   std::uint64_t startOffsetSeed = 1;
+  // Apply the model's point refiner (ClmModel::refiner, when it has one) to the fitted points.
+  bool refine = true;
 };
 
 enum class ImageFitStatus { Ok, NoFace, Error };
