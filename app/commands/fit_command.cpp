@@ -27,20 +27,14 @@ struct FitArgs {
   fs::path model, image, init, out, overlay;
   fs::path images, outDir, initDir;
   bool quiet = false;
-  bool noRefine = false;
   double startOffset = 0.0;
   FitOptions fit;
 };
 
 ImageFitSettings imageFitSettings(const FitArgs& args) {
-  ImageFitSettings settings;
-  settings.fit = args.fit.settings();
-  settings.detector = args.fit.detectorKind();
-  settings.verticalFovDeg = args.fit.fovDeg;
-  settings.startSearch = args.fit.tracker.startSearch;
+  ImageFitSettings settings = clm3d::imageFitSettings(args.fit.tracker, args.fit.fovDeg);
   settings.startOffset = args.startOffset;
   settings.startOffsetSeed = args.fit.seed();
-  settings.refine = !args.noRefine;
   return settings;
 }
 
@@ -148,9 +142,6 @@ void addFitCommand(CLI::App& root) {
                       "with --images: start each image from STEM.pts, .ljson or .csv in this "
                       "folder instead of the face detector");
   command->add_flag("--quiet", args->quiet, "with --images: no per-image progress on stderr");
-  command->add_flag("--no-refine", args->noRefine,
-                    "leave the search's points as they are: do not apply the model's point refiner "
-                    "(models trained with photos have one; docs/fitting.md)");
   command
       ->add_option("--start-offset", args->startOffset,
                    "move every start by this share of its eye distance, in a direction drawn per "

@@ -53,6 +53,16 @@ FitState offsetStart(const ClmModel& model, const Fitter& fitter, const FitState
 
 }  // namespace
 
+ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg) {
+  ImageFitSettings settings;
+  settings.fit = tracker.fit;
+  settings.detector = tracker.detector;
+  settings.startSearch = tracker.startSearch;
+  settings.verticalFovDeg = verticalFovDeg;
+  settings.refine = tracker.refine;
+  return settings;
+}
+
 FitState stateFromPointsFile(const ClmModel& model, const Camera& camera, const fs::path& path) {
   const Scheme scheme = model.scheme();
   const LandmarkSet given = readLandmarks(path, &scheme);

@@ -46,6 +46,11 @@ struct ImageFitSettings {
   bool refine = true;
 };
 
+// The settings of a still image's fit from the tracker's search options (the search, detector,
+// start grid and refiner switch of `clm3d fit`, `clm3d batch` and the studio) and the camera's
+// field of view.
+ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg);
+
 enum class ImageFitStatus { Ok, NoFace, Error };
 // "ok", "no-face", "error" (the summary's status column).
 const char* toString(ImageFitStatus status);

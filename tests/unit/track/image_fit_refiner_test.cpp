@@ -1,7 +1,8 @@
 // The point refiner in the fit of still images: trained by the trainer's photo path
 // (trainPhotoRefiner) from renders of the fixture's procedural heads saved as annotated photos, it
 // refines every landmark they all mark, brings starts moved off a held-out head closer to its
-// truth, and ImageFitter applies it to the search's points unless told not to.
+// truth, and ImageFitter and the Tracker apply it to the search's points unless told not to (the
+// tracker to a tracked frame's row only, not to the state the next frame starts from).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,6 +10,7 @@
 #include "core/refine/descent_refinement.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/batch_fit.hpp"
+#include "core/track/tracker.hpp"
 #include "core/train/refiner_training.hpp"
 #include "core/viz/image_file.hpp"
 #include "tests/support/fit_fixture.hpp"
@@ -18,8 +20,8 @@ namespace clm3d {
 namespace {
 
 namespace fs = std::filesystem;
-using test::fitTestModel;
 using test::FitScene;
+using test::fitTestModel;
 using test::kHeldOutHead;
 using test::makeFitScene;
 using test::meanPointError;
@@ -113,6 +115,26 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 0.0);
   const LandmarkSet written = readLandmarks(dir / "out.pts", &Scheme::thesis25());
   EXPECT_NEAR(written.point(12).x(), expected(0, 12), 1e-3);
+}
+
+TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead);
+  const auto trackOnce = [&](bool refine) {
+    TrackerSettings settings;
+    settings.refine = refine;
+    Tracker tracker(model, scene.camera, settings);
+    tracker.setState(scene.truth, -1);
+    return tracker.track(scene.image, 0, 0.0);
+  };
+  const TrackStep plain = trackOnce(false);
+  const TrackStep refined = trackOnce(true);
+  ASSERT_TRUE(plain.row.success && refined.row.success);
+  EXPECT_TRUE(plain.row.points.isApprox(plain.fit->points, 1e-12));
+  EXPECT_TRUE(refined.fit->state.pose.translation.isApprox(plain.fit->state.pose.translation));
+  EXPECT_TRUE(refined.row.points.isApprox(
+      refinePoints(model.refiner, scene.image, plain.fit->points), 1e-9));
 }
 
 }  // namespace
