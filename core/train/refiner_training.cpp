@@ -1,6 +1,7 @@
 #include "core/train/refiner_training.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -14,9 +15,15 @@ namespace {
 // A point is refined when at least this share of the photos marks it (and its mirror image).
 constexpr double kMarkedShare = 0.9;
 
-// The stages' feature windows, in eye distances: wide first (a start that is far off), then
-// narrower as the points close in.
-constexpr double kWindows[] = {0.8, 0.6, 0.45, 0.35, 0.3, 0.25, 0.2, 0.2};
+// The stages' feature windows, in eye distances: the last stage's, and the factor between one
+// stage's and the next's: wide first (a start that is far off), narrower as the points close in.
+// Five stages from 1.0 to 0.35 were better than four from 0.8 (0.0504 against 0.0526 from the
+// detector on 100 held-out LFPW training photos; from the 5-point start 0.0417 against 0.0425).
+constexpr double kLastWindow = 0.35;
+constexpr double kWindowGrowth = 1.3;
+// The regressions' ridge: 0.2 against 0.05 took the same held-out photos from 0.0425 to 0.0415
+// (5-point start), 0.0526 to 0.0528 (detector).
+constexpr double kRidge = 0.2;
 
 }  // namespace
 
@@ -84,8 +91,11 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   if (progress) progress(0.3, "refiner");
 
   DescentTrainSettings train;
-  const int stages = std::min<int>(settings.refinerStages, static_cast<int>(std::size(kWindows)));
-  train.windows.assign(kWindows, kWindows + stages);
+  for (int stage = 0; stage < settings.refinerStages; ++stage) {
+    train.windows.push_back(kLastWindow *
+                            std::pow(kWindowGrowth, settings.refinerStages - 1 - stage));
+  }
+  train.ridge = kRidge;
   train.startsPerPhoto = settings.refinerStarts;
   train.seed = settings.seed;
   train.threads = settings.threads;

@@ -59,7 +59,7 @@ struct TrainSettings {
   int photoJitter = 0;
   // The point refiner trained from the photos (core/train/refiner_training.hpp): its stages (0 =
   // none) and the perturbed starts per photo and side it learns from.
-  int refinerStages = 4;
+  int refinerStages = 5;
   int refinerStarts = 10;
   int supersample = 2;  // renderer anti-aliasing
   // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
