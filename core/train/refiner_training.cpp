@@ -12,7 +12,7 @@ namespace clm3d {
 
 namespace {
 
-// A point is refined when at least this share of the photos marks it (and its mirror image).
+// A point is refined when at least this share of the photos trusts it (and its mirror image).
 constexpr double kMarkedShare = 0.9;
 
 // The stages' feature windows, in eye distances: the last stage's, and the factor between one
@@ -34,7 +34,7 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   const int count = scheme.size();
   std::vector<int> marked(static_cast<std::size_t>(count), 0);
   for (const TrainingPhoto& photo : photos) {
-    for (int i = 0; i < count; ++i) marked[static_cast<std::size_t>(i)] += photo.points.has(i);
+    for (int i = 0; i < count; ++i) marked[static_cast<std::size_t>(i)] += photo.trusted[i];
   }
   const auto often = [&](int i) {
     return marked[static_cast<std::size_t>(i)] >= kMarkedShare * static_cast<double>(photos.size());
@@ -64,7 +64,7 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
         const TrainingPhoto& photo = photos[static_cast<std::size_t>(index)];
         Eigen::Matrix2Xd truth(2, n);
         for (int i = 0; i < n; ++i) {
-          if (!photo.points.has(landmarks[i])) return;
+          if (!photo.trusted[static_cast<std::size_t>(landmarks[i])]) return;
           truth.col(i) = photo.points.point(landmarks[i]).head<2>();
         }
         const cv::Mat image = cv::imread(photo.image.string(), cv::IMREAD_GRAYSCALE);
@@ -91,6 +91,7 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   if (progress) progress(0.3, "refiner");
 
   DescentTrainSettings train;
+  train.windows.clear();
   for (int stage = 0; stage < settings.refinerStages; ++stage) {
     train.windows.push_back(kLastWindow *
                             std::pow(kWindowGrowth, settings.refinerStages - 1 - stage));

@@ -1,7 +1,9 @@
 // Training the model's point refiner (core/refine/descent_refinement.hpp) from the manifest's
-// annotated photos: the refined points are those marked in nearly every photo (for an iBUG 68
-// mark-up, the 19 with a fixed counterpart), each photo is used as it is and left-right mirrored,
-// and the starts are its true points moved as a search typically leaves them.
+// annotated photos: the refined points are those the photos' mark-up trusts (TrainingPhoto::trusted,
+// as the patch experts learn them) in nearly every photo: for an iBUG 68 mark-up, the 18 with an
+// exact counterpart. Each photo is used as it is and left-right mirrored (photos that do not trust
+// every refined point are left out), and the starts are its true points moved as a search
+// typically leaves them.
 #pragma once
 
 #include <vector>
