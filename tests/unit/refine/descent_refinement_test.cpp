@@ -72,21 +72,26 @@ Eigen::Matrix2Xd offStart(const Eigen::Matrix2Xd& truth, std::mt19937_64& random
 
 const std::vector<int> kLandmarks{3, 4, 5, 6, 7, 8};  // scheme indices, any
 
+// `count` drawn faces as training photos: each cut around its true points.
+std::vector<DescentPhoto> drawnPhotos(int count, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<DescentPhoto> photos;
+  for (int f = 0; f < count; ++f) {
+    const DrawnFace face = drawFace(random);
+    DescentPhoto photo;
+    photo.region = descentRegion(face.image, face.points, 0, 1);
+    photo.truth = photo.region.toRegion(face.points);
+    photos.push_back(std::move(photo));
+  }
+  return photos;
+}
+
 DescentRefiner trainedRefiner() {
   static const DescentRefiner refiner = [] {
-    std::mt19937_64 random(11);
-    std::vector<DescentPhoto> photos;
-    for (int f = 0; f < 80; ++f) {
-      const DrawnFace face = drawFace(random);
-      DescentPhoto photo;
-      photo.region = descentRegion(face.image, face.points, 0, 1);
-      photo.truth = photo.region.toRegion(face.points);
-      photos.push_back(std::move(photo));
-    }
     DescentTrainSettings settings;
     settings.startsPerPhoto = 8;
     settings.threads = 2;
-    return trainDescentRefiner(photos, kLandmarks, 0, 1, settings);
+    return trainDescentRefiner(drawnPhotos(80, 11), kLandmarks, 0, 1, settings);
   }();
   return refiner;
 }
@@ -117,15 +122,7 @@ TEST(DescentRefinement, BringsStartsOnUnseenFacesCloserToTheTruth) {
 }
 
 TEST(DescentRefinement, TrainingDoesNotDependOnTheThreadCount) {
-  std::mt19937_64 random(5);
-  std::vector<DescentPhoto> photos;
-  for (int f = 0; f < 6; ++f) {
-    const DrawnFace face = drawFace(random);
-    DescentPhoto photo;
-    photo.region = descentRegion(face.image, face.points, 0, 1);
-    photo.truth = photo.region.toRegion(face.points);
-    photos.push_back(std::move(photo));
-  }
+  const std::vector<DescentPhoto> photos = drawnPhotos(6, 5);
   DescentTrainSettings settings;
   settings.windows = {0.6};
   settings.startsPerPhoto = 3;
