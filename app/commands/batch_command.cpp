@@ -96,10 +96,7 @@ void reportCounts(int items, int ok, int noFace, int errors, const fs::path& sum
 BatchSettings makeSettings(const BatchArgs& args) {
   BatchSettings settings;
   settings.track = args.fit.tracker;
-  settings.image.fit = args.fit.settings();
-  settings.image.detector = args.fit.detectorKind();
-  settings.image.startSearch = args.fit.tracker.startSearch;
-  settings.image.verticalFovDeg = args.fit.fovDeg;
+  settings.image = imageFitSettings(args.fit.tracker, args.fit.fovDeg);
   return settings;
 }
 

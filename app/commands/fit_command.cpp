@@ -32,11 +32,7 @@ struct FitArgs {
 };
 
 ImageFitSettings imageFitSettings(const FitArgs& args) {
-  ImageFitSettings settings;
-  settings.fit = args.fit.settings();
-  settings.detector = args.fit.detectorKind();
-  settings.verticalFovDeg = args.fit.fovDeg;
-  settings.startSearch = args.fit.tracker.startSearch;
+  ImageFitSettings settings = clm3d::imageFitSettings(args.fit.tracker, args.fit.fovDeg);
   settings.startOffset = args.startOffset;
   settings.startOffsetSeed = args.fit.seed();
   return settings;

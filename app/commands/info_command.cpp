@@ -68,6 +68,12 @@ void runInfo(const std::filesystem::path& path) {
             << model.views.size() << " view(s), patch ratio " << model.patchRatio << "\n";
   printShape(model.shape);
   for (std::size_t v = 0; v < model.views.size(); ++v) printView(model.views[v], v, scheme);
+  if (model.refiner.empty()) {
+    std::cout << "point refiner: none\n";
+  } else {
+    std::cout << "point refiner: " << model.refiner.stages.size() << " stages over "
+              << model.refiner.landmarks.size() << " landmarks\n";
+  }
   const ModelProvenance& p = model.provenance;
   std::cout << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"
             << "created: " << p.created << " by clm3d " << p.toolVersion << ", seed " << p.seed

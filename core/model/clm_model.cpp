@@ -173,6 +173,11 @@ void ClmModel::validate() const {
       validatePatchModel(view.scales[s], view, n, field + ".scales[" + std::to_string(s) + "]");
     }
   }
+  try {
+    refiner.validate(n);
+  } catch (const Error& e) {
+    fail("refiner", e.what());
+  }
 }
 
 int ClmModel::nearestView(double pitchDeg, double yawDeg) const {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/model/descent_refiner.hpp"
 #include "core/model/shape_model.hpp"
 #include "core/model/texture_model.hpp"
 
@@ -28,6 +29,9 @@ struct ClmModel {
   double patchRatio = 0.24;  // patchSize / inter-ocular distance (pixels) at the finest scale
   std::string settingsJson;  // the training settings, as JSON (an object, or empty)
   ModelProvenance provenance;
+  // Refinement of the fitted 2D points, learnt from annotated photos; empty when the model was
+  // trained without photos (or asked not to train one).
+  DescentRefiner refiner;
 
   // The scheme, parsed from schemeJson (throws InputError if it does not parse).
   Scheme scheme() const;

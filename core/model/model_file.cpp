@@ -186,6 +186,16 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
           {"views", views}};
 }
 
+// The "refiner" member of the header (version 4; absent when the model has none).
+json refinerJson(const DescentRefiner& refiner) {
+  json windows = json::array();
+  for (const DescentStage& stage : refiner.stages) windows.push_back(stage.window);
+  return {{"landmarks", refiner.landmarks},
+          {"leftEye", refiner.leftEye},
+          {"rightEye", refiner.rightEye},
+          {"windows", windows}};
+}
+
 [[noreturn]] void fieldError(const std::string& field, const std::string& what) {
   throw Error("field " + field + ": " + what);
 }
@@ -247,6 +257,35 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
             1 + static_cast<std::uint64_t>(shapeModes), "shape");
   addValues(doubles, static_cast<std::uint64_t>(shapeModes), 1, "shape");
   const Header& views = array(header, "views", kMaxViews);
+  // Version 4: the point refiner, sized here, its arrays after the views'.
+  if (version >= 4 && header.has("refiner")) {
+    JsonFields refiner = header.object("refiner");
+    for (const Header& landmark :
+         array(refiner, "landmarks", static_cast<std::size_t>(kMaxPoints))) {
+      if (!landmark.is_number_integer() || landmark < 0 || landmark >= kMaxPoints) {
+        fieldError(refiner.name("landmarks"), "entries must be landmark indices");
+      }
+      model.refiner.landmarks.push_back(landmark.get<int>());
+    }
+    const auto n = static_cast<std::int64_t>(model.refiner.landmarks.size());
+    model.refiner.leftEye =
+        static_cast<int>(refiner.integer("leftEye", 0, std::max<std::int64_t>(n - 1, 0)));
+    model.refiner.rightEye =
+        static_cast<int>(refiner.integer("rightEye", 0, std::max<std::int64_t>(n - 1, 0)));
+    const Header& windows = array(refiner, "windows", kMaxScales);
+    if (windows.empty()) fieldError(refiner.name("windows"), "a refiner needs at least one stage");
+    refiner.rejectUnknown();
+    const auto d = static_cast<std::uint64_t>(n) * kDescentFeaturesPerPoint;
+    addValues(doubles, 2 * static_cast<std::uint64_t>(n), 1, refiner.path());
+    for (const Header& window : windows) {
+      if (!window.is_number()) fieldError(refiner.name("windows"), "entries must be numbers");
+      DescentStage stage;
+      stage.window = window.get<double>();  // arrays sized once the byte count is checked
+      addValues(floats, d, 1 + 2 * static_cast<std::uint64_t>(n), refiner.path());
+      addValues(floats, 2 * static_cast<std::uint64_t>(n), 1, refiner.path());
+      model.refiner.stages.push_back(std::move(stage));
+    }
+  }
   header.rejectUnknown();
   mirrorOf.assign(views.size(), -1);
   std::vector<JsonFields> viewFields;
@@ -405,6 +444,20 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readExperts(reader, patch.experts, version);
     }
   }
+  if (!model.refiner.empty()) {
+    const auto n = static_cast<Eigen::Index>(model.refiner.landmarks.size());
+    const Eigen::Index d = n * kDescentFeaturesPerPoint;
+    model.refiner.meanShape.resize(2, n);
+    readArray(reader, model.refiner.meanShape);
+    for (DescentStage& stage : model.refiner.stages) {
+      stage.featureMean.resize(d);
+      stage.weights.resize(2 * n, d);
+      stage.bias.resize(2 * n);
+      readArray(reader, stage.featureMean);
+      readArray(reader, stage.weights);
+      readArray(reader, stage.bias);
+    }
+  }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
     const Scheme scheme = model.scheme();
     for (std::size_t v = 0; v < mirrorOf.size(); ++v) {
@@ -460,7 +513,9 @@ std::string serializeModel(const ClmModel& model) {
   const std::vector<int> mirrorOf = mirrorSources(model);
   std::string headerText;
   try {
-    headerText = headerJson(model, mirrorOf).dump();
+    json header = headerJson(model, mirrorOf);
+    if (!model.refiner.empty()) header["refiner"] = refinerJson(model.refiner);
+    headerText = header.dump();
   } catch (const json::exception& e) {
     throw Error(std::string("model header: ") + e.what());
   }
@@ -482,6 +537,14 @@ std::string serializeModel(const ClmModel& model) {
         appendFloats(payload, expert.bias);
         appendFloats(payload, expert.alpha);
       }
+    }
+  }
+  if (!model.refiner.empty()) {
+    appendFloats(payload, model.refiner.meanShape);
+    for (const DescentStage& stage : model.refiner.stages) {
+      appendFloats(payload, stage.featureMean);
+      appendFloats(payload, stage.weights);
+      appendFloats(payload, stage.bias);
     }
   }
   std::string file(kMagic);

@@ -19,6 +19,7 @@
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/detect/start_search.hpp"
+#include "core/refine/descent_refinement.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -51,6 +52,16 @@ FitState offsetStart(const ClmModel& model, const Fitter& fitter, const FitState
 }
 
 }  // namespace
+
+ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg) {
+  ImageFitSettings settings;
+  settings.fit = tracker.fit;
+  settings.detector = tracker.detector;
+  settings.startSearch = tracker.startSearch;
+  settings.verticalFovDeg = verticalFovDeg;
+  settings.refine = tracker.refine;
+  return settings;
+}
 
 FitState stateFromPointsFile(const ClmModel& model, const Camera& camera, const fs::path& path) {
   const Scheme scheme = model.scheme();
@@ -136,6 +147,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     FitResult fit = startPoints.empty() ? fitFromBestStart(fitter, *model_, lastImage_, start,
                                                            settings_.startSearch)
                                         : fitter.fit(lastImage_, start);
+    if (settings_.refine) fit.points = refinePoints(model_->refiner, lastImage_, fit.points);
     outcome.fitMilliseconds = millisecondsSince(begin);
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];

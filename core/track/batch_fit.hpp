@@ -42,7 +42,14 @@ struct ImageFitSettings {
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
   double startOffset = 0.0;
   std::uint64_t startOffsetSeed = 1;
+  // Apply the model's point refiner (ClmModel::refiner, when it has one) to the fitted points.
+  bool refine = true;
 };
+
+// The settings of a still image's fit from the tracker's search options (the search, detector,
+// start grid and refiner switch of `clm3d fit`, `clm3d batch` and the studio) and the camera's
+// field of view.
+ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg);
 
 enum class ImageFitStatus { Ok, NoFace, Error };
 // "ok", "no-face", "error" (the summary's status column).

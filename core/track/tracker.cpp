@@ -8,6 +8,7 @@
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
+#include "core/refine/descent_refinement.hpp"
 #include "core/video/video_reader.hpp"
 
 namespace clm3d {
@@ -231,6 +232,13 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.view = step.fit->view;
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;
+    if (step.row.success && settings_.refine && !model_->refiner.empty()) {
+      const auto begin = std::chrono::steady_clock::now();
+      step.row.points = refinePoints(model_->refiner, frame, step.row.points);
+      step.fitMilliseconds +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+              .count();
+    }
     step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
     step.row.landmarkConfidence = step.fit->landmarkConfidence;
   }

@@ -77,6 +77,10 @@ struct TrackerSettings {
   // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
   // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
   SmoothingSettings smoothing;
+  // Apply the model's point refiner (ClmModel::refiner, learnt from annotated photos; models
+  // without photos have none) to a tracked frame's fitted points before smoothing. The next frame
+  // still starts from the fitted 3D state.
+  bool refine = true;
 };
 
 // Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest

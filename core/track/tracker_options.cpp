@@ -94,6 +94,11 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(flag(
       "no-alpha", "No alpha masks", "Search", search, "do not mask patches with the alpha masks",
       [](S& s) -> bool& { return s.fit.alphaMask; }, true));
+  options.push_back(flag(
+      "no-refine", "Refine the points", "Search", search,
+      "leave the search's points as they are: do not apply the model's point "
+      "refiner (models trained with photos have one; docs/fitting.md)",
+      [](S& s) -> bool& { return s.refine; }, true));
   options.push_back(choice(
       "detector", "Face detector", "Search", search, {"cascade", "dlib"},
       "face detector: cascade (OpenCV) or dlib (HOG)",

@@ -100,6 +100,16 @@ std::vector<TrainOption> buildOptions() {
            "perturbed placements (scale, roll, shift) of each training photo beside its exact one",
            0, 20),
       [](S& s) -> int& { return s.photoJitter; }));
+  o.push_back(integerOption<S>(
+      spec("refiner-stages", "Refiner stages", experts,
+           "stages of the point refiner learnt from the annotated photos (a cascade of regressions "
+           "from the image around the fitted points to their corrections); 0 = none",
+           0, 8),
+      [](S& s) -> int& { return s.refinerStages; }));
+  o.push_back(integerOption<S>(
+      spec("refiner-starts", "Refiner starts", experts,
+           "perturbed starts per photo (and per mirrored photo) the refiner learns from", 1, 50),
+      [](S& s) -> int& { return s.refinerStarts; }));
 
   const std::string pca = "Variance kept";
   o.push_back(realOption<S>(

@@ -95,6 +95,7 @@ std::string TrainSettings::toJson() const {
     j["experts"] = {{"radius", expertRadius}, {"ridge", expertRidge}, {"units", expertUnits}};
   }
   j["photo_jitter"] = photoJitter;
+  j["refiner"] = {{"stages", refinerStages}, {"starts", refinerStarts}};
   j["render_size"] = renderSize();
   j["greyscale"] = true;
   if (augmentation.any()) {  // absent when off, so models trained without it are unchanged

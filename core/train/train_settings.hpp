@@ -57,6 +57,10 @@ struct TrainSettings {
   // samples and the training time and left the error on 100 held-out LFPW training photos where it
   // was (0.0578 against 0.0583 from a 5-point start).
   int photoJitter = 0;
+  // The point refiner trained from the photos (core/train/refiner_training.hpp): its stages (0 =
+  // none) and the perturbed starts per photo and side it learns from.
+  int refinerStages = 5;
+  int refinerStarts = 10;
   int supersample = 2;  // renderer anti-aliasing
   // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
   // the manifest unless augmentationFromManifest is false (clm3d train --no-augmentation).

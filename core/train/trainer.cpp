@@ -5,6 +5,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/train/refiner_training.hpp"
 
 namespace clm3d::embedded {
 std::string_view thesis25SchemeJson();
@@ -59,11 +60,19 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
     photoSamples = preparePhotoSamples(input.photos, input.schemeJson, model.shape, settings,
                                        placements, photoProgress, cancel);
   }
+  // With photos, the last 5% is the point refiner's.
+  const double textureEnd = input.photos.empty() ? 1.0 : 0.95;
   const auto textureProgress = [&](double fraction, std::string_view stage) {
-    if (progress) progress(0.02 + photoShare + (0.98 - photoShare) * fraction, stage);
+    if (progress) progress(0.02 + photoShare + (textureEnd - 0.02 - photoShare) * fraction, stage);
+  };
+  const auto refinerProgress = [&](double fraction, std::string_view stage) {
+    if (progress) progress(textureEnd + (1.0 - textureEnd) * fraction, stage);
   };
   model.views = trainTextureModels(input.subjects, scheme, settings, textureProgress, cancel,
                                    input.shapeOnly, photoSamples);
+  if (!input.photos.empty()) {
+    model.refiner = trainPhotoRefiner(input.photos, scheme, settings, refinerProgress, cancel);
+  }
   model.singleView = settings.singleView;
   model.patchRatio = settings.patchRatio;
   model.settingsJson = settings.toJson();

@@ -35,9 +35,9 @@ TEST(TrainCli, TrainsASmallModelThatLoads) {
 }
 
 // --expert-units: every expert of the model has that many units (a neural field, or the linear
-// expert padded where the field lost on held-out regions), the file is format 3, and `clm3d info`
-// reads it back.
-TEST(TrainCli, NeuralFieldExpertsAreWrittenAsFormat3) {
+// expert padded where the field lost on held-out regions), the file is of the current format
+// (version 3 brought the units), and `clm3d info` reads it back.
+TEST(TrainCli, NeuralFieldExpertsAreWrittenAndReadBack) {
   test::TempDir dir;
   test::writeFile(dir / "tiny.json", kTinyManifest);
   const auto result = test::runClm3d(
@@ -56,7 +56,8 @@ TEST(TrainCli, NeuralFieldExpertsAreWrittenAsFormat3) {
   std::cout << "[ " << fields << " experts kept their neural field ]\n";
   const auto info = test::runClm3d("info " + (dir / "n.clm3d").string());
   ASSERT_EQ(info.exitCode, 0) << info.output;
-  EXPECT_TRUE(test::contains(info.output, "format version 3")) << info.output;
+  EXPECT_TRUE(test::contains(info.output, "format version 4")) << info.output;
+  EXPECT_TRUE(test::contains(info.output, "point refiner: none")) << info.output;
   const auto refused =
       test::runClm3d("train --dataset " + (dir / "tiny.json").string() + " --out " +
                      (dir / "x.clm3d").string() + " --expert-units 17");

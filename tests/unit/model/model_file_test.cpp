@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -126,7 +127,7 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   std::string newer = good;
   writeU32(newer, 8, 7);
   EXPECT_EQ(parseError(newer),
-            "m.clm3d: format version 7 is newer than this clm3d (3); update clm3d");
+            "m.clm3d: format version 7 is newer than this clm3d (4); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
   EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
@@ -304,6 +305,67 @@ TEST(ModelFile, ExpertsAndMirroredViewsRoundTrip) {
   EXPECT_GT(full.size(), bytes.size() + 4 * 2 * (4 + 4 * 16));
   EXPECT_EQ(parseModel(full, "m.clm3d").views[2].scales[0].experts[0].bias,
             edited.views[2].scales[0].experts[0].bias);
+}
+
+// The tiny model with experts and a one-stage point refiner over three landmarks (arbitrary
+// values: the file only stores them).
+ClmModel tinyModelWithRefiner() {
+  ClmModel model = tinyModelWithExperts();
+  DescentRefiner& refiner = model.refiner;
+  refiner.landmarks = {0, 1, 2};
+  refiner.leftEye = 0;
+  refiner.rightEye = 1;
+  refiner.meanShape.resize(2, 3);
+  refiner.meanShape << -0.5, 0.5, 0.0, 0.0, 0.0, 0.6;
+  DescentStage stage;
+  stage.window = 0.6;
+  const Eigen::Index d = 3 * kDescentFeaturesPerPoint;
+  stage.featureMean = Eigen::VectorXf::LinSpaced(d, 0.0f, 0.1f);
+  stage.weights = Eigen::MatrixXf::Constant(6, d, 0.001f);
+  stage.weights(5, d - 1) = -0.5f;
+  stage.bias = Eigen::VectorXf::LinSpaced(6, -0.01f, 0.01f);
+  refiner.stages.push_back(stage);
+  return model;
+}
+
+// Version 4: the point refiner is stored after the views and read back exactly; a model without
+// one writes no "refiner" key, and a version 3 file (the fuzz corpus's tiny-experts-v3.clm3d)
+// loads without one.
+TEST(ModelFile, PointRefinerRoundTrips) {
+  const ClmModel model = tinyModelWithRefiner();
+  const std::string bytes = serializeModel(model);
+  // The fuzz target's version 4 seed (tests/fuzz/corpus/fuzz_model_file/tiny-refiner-v4.clm3d).
+  if (const char* corpus = std::getenv("CLM3D_WRITE_REFINER_MODEL_SEED")) saveModel(model, corpus);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  EXPECT_EQ(loaded.refiner.landmarks, model.refiner.landmarks);
+  EXPECT_EQ(loaded.refiner.meanShape, model.refiner.meanShape);
+  ASSERT_EQ(loaded.refiner.stages.size(), 1u);
+  EXPECT_EQ(loaded.refiner.stages[0].window, 0.6);
+  EXPECT_EQ(loaded.refiner.stages[0].weights, model.refiner.stages[0].weights);
+  EXPECT_EQ(loaded.refiner.stages[0].featureMean, model.refiner.stages[0].featureMean);
+  EXPECT_EQ(loaded.refiner.stages[0].bias, model.refiner.stages[0].bias);
+  EXPECT_EQ(headerOf(serializeModel(tinyModelWithExperts())).find("refiner"), std::string::npos);
+
+  // A second stage in the header without its arrays, a landmark beyond the scheme, an unknown key.
+  const std::string header = headerOf(bytes);
+  for (const auto& [from, to, expected] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"\"windows\":[0.6]", "\"windows\":[0.6,0.5]", "bytes of arrays"},
+           {"\"landmarks\":[0,1,2]", "\"landmarks\":[0,1,99]", "refiner"},
+           {"\"leftEye\":", "\"leftEyes\":", "refiner.leftEye"}}) {
+    std::string edited = header;
+    const auto at = edited.find(from, edited.find("\"refiner\""));
+    ASSERT_NE(at, std::string::npos) << from;
+    edited.replace(at, from.size(), to);
+    EXPECT_NE(parseError(withHeader(bytes, edited)).find(expected), std::string::npos)
+        << to << ": " << parseError(withHeader(bytes, edited));
+  }
+
+  const std::filesystem::path v3 = std::filesystem::path(CLM3D_TEST_FIXTURES) /
+                                   "../fuzz/corpus/fuzz_model_file/tiny-experts-v3.clm3d";
+  ASSERT_EQ(modelFileVersion(v3), 3u);
+  EXPECT_TRUE(loadModel(v3).refiner.empty());
 }
 
 // A file of format version 2 (one linear filter, gain and bias per expert: the fuzz corpus's

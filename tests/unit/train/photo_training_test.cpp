@@ -173,6 +173,14 @@ TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
     }
   }
   EXPECT_NO_THROW(model.validate());
+  // The point refiner learnt from the photos: every point is trusted in both, so all 25 are
+  // refined, the windows shrinking to 0.35 eye distances.
+  EXPECT_EQ(model.refiner.stages.size(), static_cast<std::size_t>(s.refinerStages));
+  EXPECT_EQ(model.refiner.landmarks.size(), 25u);
+  EXPECT_NEAR(model.refiner.stages.back().window, 0.35, 1e-12);
+  EXPECT_NEAR(model.refiner.stages.front().window, 0.35 * std::pow(1.3, s.refinerStages - 1), 1e-9);
+  s.refinerStages = 0;
+  EXPECT_TRUE(trainFromManifest(fixture.manifest, s, "test").refiner.empty());
 }
 
 TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {

@@ -1,0 +1,33 @@
+#include "core/model/descent_refiner.hpp"
+
+#include <string>
+
+#include "core/common/error.hpp"
+
+namespace clm3d {
+
+void DescentRefiner::validate(int schemeSize) const {
+  if (stages.empty()) return;
+  const auto n = static_cast<Eigen::Index>(landmarks.size());
+  const auto fail = [](const std::string& what) { throw Error(what); };
+  if (n < 3) fail("needs at least 3 landmarks");
+  for (int l : landmarks) {
+    if (l < 0 || l >= schemeSize) fail("landmark index " + std::to_string(l) + " out of range");
+  }
+  if (leftEye < 0 || leftEye >= n || rightEye < 0 || rightEye >= n || leftEye == rightEye)
+    fail("eye positions out of range");
+  if (meanShape.cols() != n || !meanShape.allFinite()) fail("mean shape size or values");
+  const Eigen::Index d = n * kDescentFeaturesPerPoint;
+  for (std::size_t s = 0; s < stages.size(); ++s) {
+    const DescentStage& stage = stages[s];
+    const std::string where = "stages[" + std::to_string(s) + "]";
+    if (!(stage.window > 0.0 && stage.window <= 4.0)) fail(where + ".window must be in (0, 4]");
+    if (stage.featureMean.size() != d || stage.weights.rows() != 2 * n ||
+        stage.weights.cols() != d || stage.bias.size() != 2 * n)
+      fail(where + ": array sizes do not match " + std::to_string(n) + " landmarks");
+    if (!stage.featureMean.allFinite() || !stage.weights.allFinite() || !stage.bias.allFinite())
+      fail(where + ": values not finite");
+  }
+}
+
+}  // namespace clm3d

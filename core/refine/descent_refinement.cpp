@@ -1,0 +1,236 @@
+#include "core/refine/descent_refinement.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <string>
+
+#include "core/common/error.hpp"
+#include "core/common/parallel_for.hpp"
+#include "core/refine/descent_features.hpp"
+
+namespace clm3d {
+
+namespace {
+
+// Margin of the region around the points, in eye distances (the widest window reaches 0.4).
+constexpr double kRegionMargin = 1.2;
+
+Eigen::Matrix2Xd mapped(const SimilarityFrame& frame, const Eigen::Matrix2Xd& points,
+                        bool toNormalised) {
+  Eigen::Matrix2Xd out(2, points.cols());
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    out.col(i) = toNormalised ? frame.toNormalised(points.col(i)) : frame.toImage(points.col(i));
+  }
+  return out;
+}
+
+Eigen::Matrix2Xd applyStage(const DescentStage& stage, const Eigen::Matrix2Xd& meanShape,
+                            const cv::Mat& grey, const Eigen::Matrix2Xd& points) {
+  const SimilarityFrame frame = fitSimilarity(meanShape, points);
+  Eigen::Matrix2Xd normalised = mapped(frame, points, true);
+  const Eigen::VectorXf features = descentFeatures(grey, frame, normalised, stage.window);
+  const Eigen::VectorXf step = stage.weights * (features - stage.featureMean) + stage.bias;
+  normalised +=
+      Eigen::Map<const Eigen::Matrix2Xf>(step.data(), 2, normalised.cols()).cast<double>();
+  return mapped(frame, normalised, false);
+}
+
+Eigen::Matrix2Xd withEyesAtOrigin(const Eigen::Matrix2Xd& shape, int leftEye, int rightEye) {
+  const Eigen::Vector2d eyes = 0.5 * (shape.col(leftEye) + shape.col(rightEye));
+  const double distance = (shape.col(leftEye) - shape.col(rightEye)).norm();
+  return (shape.colwise() - eyes) / distance;
+}
+
+// The Procrustes mean of the true points.
+Eigen::Matrix2Xd meanShapeOf(const std::vector<DescentPhoto>& photos, int leftEye, int rightEye) {
+  Eigen::Matrix2Xd mean = withEyesAtOrigin(photos.front().truth, leftEye, rightEye);
+  for (int round = 0; round < 4; ++round) {
+    Eigen::Matrix2Xd sum = Eigen::Matrix2Xd::Zero(2, mean.cols());
+    for (const DescentPhoto& photo : photos)
+      sum += mapped(fitSimilarity(mean, photo.truth), photo.truth, true);
+    mean = withEyesAtOrigin(sum / static_cast<double>(photos.size()), leftEye, rightEye);
+  }
+  return mean;
+}
+
+// A start for training: the truth moved by a random similarity and per-point offsets.
+Eigen::Matrix2Xd perturbedStart(const Eigen::Matrix2Xd& truth, double eyeDistance,
+                                const DescentTrainSettings& settings, std::mt19937_64& random) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double scale = std::exp(settings.scale * normal(random));
+  const double roll = settings.roll * normal(random);
+  const Eigen::Vector2d shift =
+      settings.shift * eyeDistance * Eigen::Vector2d(normal(random), normal(random));
+  const Eigen::Vector2d centre = truth.rowwise().mean();
+  const double c = std::cos(roll) * scale, s = std::sin(roll) * scale;
+  Eigen::Matrix2Xd start(2, truth.cols());
+  for (Eigen::Index i = 0; i < truth.cols(); ++i) {
+    const Eigen::Vector2d d = truth.col(i) - centre;
+    const Eigen::Vector2d own =
+        settings.jitter * eyeDistance * Eigen::Vector2d(normal(random), normal(random));
+    start.col(i) =
+        centre + shift + Eigen::Vector2d(c * d.x() - s * d.y(), s * d.x() + c * d.y()) + own;
+  }
+  return start;
+}
+
+// The ridge regression of centred targets (outputs x samples) on centred features (features x
+// samples): weights W minimising |T - W F|^2 + lambda |W|^2, lambda = `ridge` times the features'
+// mean variance times the sample count. Solved in the smaller of the two equivalent forms: with
+// fewer samples than features, W = T (F^T F + lambda I)^-1 F^T.
+Eigen::MatrixXf ridgeRegression(const Eigen::MatrixXf& features, const Eigen::MatrixXf& targets,
+                                double ridge) {
+  const Eigen::Index d = features.rows(), m = features.cols();
+  const double lambda = ridge * features.cast<double>().squaredNorm() / static_cast<double>(d);
+  if (m < d) {
+    Eigen::MatrixXd kernel = (features.transpose() * features).cast<double>();
+    kernel.diagonal().array() += lambda;
+    const Eigen::MatrixXd dual = kernel.llt().solve(targets.transpose().cast<double>());
+    return (features.cast<double>() * dual).transpose().cast<float>();
+  }
+  Eigen::MatrixXd gram = (features * features.transpose()).cast<double>();
+  gram.diagonal().array() += lambda;
+  const Eigen::MatrixXd rhs = (features * targets.transpose()).cast<double>();
+  return gram.llt().solve(rhs).transpose().cast<float>();
+}
+
+}  // namespace
+
+Eigen::Matrix2Xd DescentRegion::toRegion(const Eigen::Matrix2Xd& image) const {
+  return scale * (image.colwise() - offset);
+}
+
+Eigen::Matrix2Xd DescentRegion::toImage(const Eigen::Matrix2Xd& region) const {
+  return (region / scale).colwise() + offset;
+}
+
+DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,
+                            int rightEye) {
+  if (image.empty()) throw InputError("refine: the image is empty");
+  const double eyeDistance = (points.col(leftEye) - points.col(rightEye)).norm();
+  if (!(eyeDistance > 0.0) || !points.allFinite())
+    throw InputError("refine: the points' eyes coincide or are not finite");
+  cv::Mat grey;
+  if (image.type() == CV_8UC3) {
+    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  } else if (image.type() == CV_8UC4) {
+    cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
+  } else if (image.type() == CV_8UC1 || image.type() == CV_32FC1) {
+    grey = image;
+  } else {
+    throw InputError("refine: unsupported image type (need 8-bit grey, BGR or BGRA, or float)");
+  }
+  const double margin = kRegionMargin * eyeDistance;
+  const Eigen::Vector2d low = points.rowwise().minCoeff().array() - margin;
+  const Eigen::Vector2d high = points.rowwise().maxCoeff().array() + margin;
+  const auto clampTo = [](double v, int lo, int hi) {
+    return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+  };
+  const int x0 = clampTo(std::floor(low.x()), 0, grey.cols - 1);
+  const int y0 = clampTo(std::floor(low.y()), 0, grey.rows - 1);
+  const int x1 = clampTo(std::ceil(high.x()) + 1, x0 + 1, grey.cols);
+  const int y1 = clampTo(std::ceil(high.y()) + 1, y0 + 1, grey.rows);
+  const cv::Mat roi = grey(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+  const double scale = kDescentEyeDistance / eyeDistance;
+  const int width = std::max(1, static_cast<int>(std::lround(roi.cols * scale)));
+  const int height = std::max(1, static_cast<int>(std::lround(roi.rows * scale)));
+  cv::Mat resized;
+  cv::resize(roi, resized, cv::Size(width, height), 0, 0,
+             scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+  DescentRegion region;
+  // 8-bit images are brought to [0, 1], as float images come (the features ignore the range).
+  resized.convertTo(region.grey, CV_32F, image.depth() == CV_8U ? 1.0 / 255.0 : 1.0);
+  region.scale = static_cast<double>(width) / roi.cols;
+  region.offset = Eigen::Vector2d(x0, y0);
+  return region;
+}
+
+Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
+                                const Eigen::Matrix2Xd& start) {
+  Eigen::Matrix2Xd points = start;
+  for (const DescentStage& stage : refiner.stages)
+    points = applyStage(stage, refiner.meanShape, regionGrey, points);
+  return points;
+}
+
+Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
+                              const Eigen::Matrix2Xd& points) {
+  if (refiner.empty()) return points;
+  const std::vector<int>& landmarks = refiner.landmarks;
+  Eigen::Matrix2Xd start(2, static_cast<Eigen::Index>(landmarks.size()));
+  for (std::size_t i = 0; i < landmarks.size(); ++i) {
+    if (landmarks[i] >= points.cols()) throw Error("refine: fewer points than the refiner's");
+    start.col(static_cast<Eigen::Index>(i)) = points.col(landmarks[i]);
+  }
+  if (!start.allFinite()) return points;
+  const DescentRegion region = descentRegion(image, start, refiner.leftEye, refiner.rightEye);
+  const Eigen::Matrix2Xd refined =
+      region.toImage(refineInRegion(refiner, region.grey, region.toRegion(start)));
+  Eigen::Matrix2Xd out = points;
+  for (std::size_t i = 0; i < landmarks.size(); ++i)
+    out.col(landmarks[i]) = refined.col(static_cast<Eigen::Index>(i));
+  return out;
+}
+
+DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
+                                   const std::vector<int>& landmarks, int leftEye, int rightEye,
+                                   const DescentTrainSettings& settings,
+                                   const CancelToken* cancel) {
+  if (photos.empty()) throw InputError("refiner: no photos to train from");
+  if (settings.startsPerPhoto < 1) throw InputError("refiner: need at least one start per photo");
+  DescentRefiner refiner;
+  refiner.landmarks = landmarks;
+  refiner.leftEye = leftEye;
+  refiner.rightEye = rightEye;
+  refiner.meanShape = meanShapeOf(photos, leftEye, rightEye);
+  const auto n = refiner.meanShape.cols();
+  const Eigen::Index d = n * kDescentFeaturesPerPoint;
+  const int perPhoto = settings.startsPerPhoto;
+  const int m = static_cast<int>(photos.size()) * perPhoto;
+
+  // Starts drawn per photo from its own seed, so they do not depend on the thread count.
+  std::vector<Eigen::Matrix2Xd> starts(static_cast<std::size_t>(m));
+  for (std::size_t p = 0; p < photos.size(); ++p) {
+    std::mt19937_64 random(settings.seed * 1000003u + p);
+    const Eigen::Matrix2Xd& truth = photos[p].truth;
+    const double eyeDistance = (truth.col(leftEye) - truth.col(rightEye)).norm();
+    for (int k = 0; k < perPhoto; ++k)
+      starts[p * perPhoto + k] = perturbedStart(truth, eyeDistance, settings, random);
+  }
+  for (double window : settings.windows) {
+    Eigen::MatrixXf features(d, m);
+    Eigen::MatrixXf targets(2 * n, m);
+    parallelFor(
+        m, settings.threads,
+        [&](int s) {
+          const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
+          const SimilarityFrame frame = fitSimilarity(refiner.meanShape, starts[s]);
+          const Eigen::Matrix2Xd start = mapped(frame, starts[s], true);
+          features.col(s) = descentFeatures(photo.region.grey, frame, start, window);
+          const Eigen::Matrix2Xd step = mapped(frame, photo.truth, true) - start;
+          targets.col(s) = Eigen::Map<const Eigen::VectorXd>(step.data(), 2 * n).cast<float>();
+        },
+        cancel);
+    DescentStage stage;
+    stage.window = window;
+    stage.featureMean = features.rowwise().mean();
+    features.colwise() -= stage.featureMean;
+    stage.bias = targets.rowwise().mean();
+    targets.colwise() -= stage.bias;
+    stage.weights = ridgeRegression(features, targets, settings.ridge);
+    parallelFor(
+        m, settings.threads,
+        [&](int s) {
+          const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
+          starts[s] = applyStage(stage, refiner.meanShape, photo.region.grey, starts[s]);
+        },
+        cancel);
+    refiner.stages.push_back(std::move(stage));
+  }
+  return refiner;
+}
+
+}  // namespace clm3d

@@ -1,0 +1,76 @@
+// Supervised descent refinement of a fit's 2D points (after the search of the 3D model has placed
+// them): applying and training the cascade of core/model/descent_refiner.hpp, each stage
+// predicting the points' corrections from the gradient-orientation features around them
+// (descent_features.hpp). Trained on annotated photos from perturbed starts, it learns what real
+// faces look like around each point, where the patch experts of one view and scale see too little
+// (docs/real-faces.md). A model trained with photos carries one (ClmModel::refiner); the fit of a
+// still image applies it unless asked not to.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "core/common/progress.hpp"
+#include "core/model/descent_refiner.hpp"
+
+namespace clm3d {
+
+// A face's part of an image in grey (CV_32FC1), scaled so that the eye distance of the points it
+// was cut around is kDescentEyeDistance pixels: the features then sample a prefiltered image at
+// any face size. region = scale * (image - offset).
+struct DescentRegion {
+  cv::Mat grey;
+  double scale = 1.0;
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
+
+  Eigen::Matrix2Xd toRegion(const Eigen::Matrix2Xd& image) const;
+  Eigen::Matrix2Xd toImage(const Eigen::Matrix2Xd& region) const;
+};
+inline constexpr double kDescentEyeDistance = 40.0;
+
+// The region of `image` (CV_8UC1/3/4 or CV_32FC1) around `points` (2 x N, finite) whose columns
+// leftEye and rightEye are the eye centres. InputError for an empty image or coinciding eyes.
+DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,
+                            int rightEye);
+
+// Every scheme landmark (2 x L, image pixels) with the refiner's points moved by every stage;
+// `image` as descentRegion takes it. The points are returned unchanged when the refiner is empty
+// or one of its points is not finite.
+Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
+                              const Eigen::Matrix2Xd& points);
+// The refiner's points only (2 x N, region pixels) after every stage, from `start`.
+Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
+                                const Eigen::Matrix2Xd& start);
+
+// One annotated face to train from: its region and true points (2 x N, region pixels).
+struct DescentPhoto {
+  DescentRegion region;
+  Eigen::Matrix2Xd truth;
+};
+
+struct DescentTrainSettings {
+  std::vector<double> windows{0.8, 0.6, 0.45, 0.35};  // one stage per window
+  // Ridge regularisation, as a share of the features' mean variance.
+  double ridge = 0.05;
+  // Starts per photo: the true points moved by a random similarity (shift, scale, roll: the
+  // search's typical misplacement) and by a small independent offset per point.
+  int startsPerPhoto = 10;
+  double shift = 0.08;   // SD of the start's shift, eye distances
+  double scale = 0.06;   // SD of the log of its scale
+  double roll = 0.1;     // SD of its roll, radians
+  double jitter = 0.03;  // SD of each point's own offset, eye distances
+  std::uint64_t seed = 1;
+  int threads = 0;
+};
+
+// Trains the cascade on `photos` (each stage learns from the starts the stages before it moved);
+// the result does not depend on the thread count. `landmarks`, `leftEye` and `rightEye` are
+// stored as given. InputError when there are no photos; Cancelled when `cancel` fires.
+DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
+                                   const std::vector<int>& landmarks, int leftEye, int rightEye,
+                                   const DescentTrainSettings& settings,
+                                   const CancelToken* cancel = nullptr);
+
+}  // namespace clm3d

@@ -1,0 +1,177 @@
+// Tests of the point refiner (core/refine): on drawn "faces" (dark discs of different sizes at
+// known points over a noisy background, each face moved, scaled and turned at random), a cascade
+// trained on some faces brings perturbed starts on other faces much closer to the truth; the
+// similarity frame round-trips; an empty refiner or a start that is not finite leaves the points
+// as they are; bad images are refused.
+#include "core/refine/descent_refinement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "core/common/error.hpp"
+#include "core/refine/descent_features.hpp"
+
+namespace clm3d {
+namespace {
+
+// Six points: two "eyes" (0, 1), a nose (2), two mouth corners (3, 4), a chin (5); eye distance 1.
+Eigen::Matrix2Xd canonicalFace() {
+  Eigen::Matrix2Xd face(2, 6);
+  face << -0.5, 0.5, 0.0, -0.4, 0.4, 0.0,  //
+      0.0, 0.0, 0.6, 1.0, 1.0, 1.5;
+  return face;
+}
+const double kRadius[6] = {0.14, 0.14, 0.1, 0.08, 0.08, 0.12};
+
+struct DrawnFace {
+  cv::Mat image;  // 8-bit grey
+  Eigen::Matrix2Xd points;
+};
+
+// A face at a random place, size (eye distance 50-90 px) and roll, each point also moved a little.
+DrawnFace drawFace(std::mt19937_64& random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  DrawnFace face;
+  face.image = cv::Mat(320, 320, CV_8UC1);
+  cv::randu(face.image, 150, 200);
+  cv::GaussianBlur(face.image, face.image, cv::Size(5, 5), 1.5);
+  const double eyeDistance = 50.0 + 40.0 * uniform(random);
+  const double roll = 0.3 * (uniform(random) - 0.5);
+  const Eigen::Vector2d centre(140.0 + 40.0 * uniform(random), 110.0 + 30.0 * uniform(random));
+  const Eigen::Matrix2Xd shape = canonicalFace();
+  face.points.resize(2, shape.cols());
+  for (Eigen::Index i = 0; i < shape.cols(); ++i) {
+    const Eigen::Vector2d p = shape.col(i) + 0.04 * Eigen::Vector2d(normal(random), normal(random));
+    face.points.col(i) =
+        centre + eyeDistance * Eigen::Vector2d(std::cos(roll) * p.x() - std::sin(roll) * p.y(),
+                                               std::sin(roll) * p.x() + std::cos(roll) * p.y());
+    cv::circle(face.image, cv::Point2d(face.points(0, i), face.points(1, i)),
+               static_cast<int>(std::lround(kRadius[i] * eyeDistance)), cv::Scalar(40), cv::FILLED,
+               cv::LINE_AA);
+  }
+  return face;
+}
+
+double meanError(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
+  const double eyeDistance = (b.col(0) - b.col(1)).norm();
+  return (a - b).colwise().norm().mean() / eyeDistance;
+}
+
+// A start as a search leaves it: the truth shifted by 0.1 of the eye distance, scaled by 5%.
+Eigen::Matrix2Xd offStart(const Eigen::Matrix2Xd& truth, std::mt19937_64& random) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double eyeDistance = (truth.col(0) - truth.col(1)).norm();
+  const Eigen::Vector2d centre = truth.rowwise().mean();
+  const Eigen::Vector2d shift = 0.1 * eyeDistance * Eigen::Vector2d(normal(random), normal(random));
+  return ((1.0 + 0.05 * normal(random)) * (truth.colwise() - centre)).colwise() + (centre + shift);
+}
+
+const std::vector<int> kLandmarks{3, 4, 5, 6, 7, 8};  // scheme indices, any
+
+// `count` drawn faces as training photos: each cut around its true points.
+std::vector<DescentPhoto> drawnPhotos(int count, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<DescentPhoto> photos;
+  for (int f = 0; f < count; ++f) {
+    const DrawnFace face = drawFace(random);
+    DescentPhoto photo;
+    photo.region = descentRegion(face.image, face.points, 0, 1);
+    photo.truth = photo.region.toRegion(face.points);
+    photos.push_back(std::move(photo));
+  }
+  return photos;
+}
+
+DescentRefiner trainedRefiner() {
+  static const DescentRefiner refiner = [] {
+    DescentTrainSettings settings;
+    settings.startsPerPhoto = 8;
+    settings.threads = 2;
+    return trainDescentRefiner(drawnPhotos(80, 11), kLandmarks, 0, 1, settings);
+  }();
+  return refiner;
+}
+
+TEST(DescentRefinement, BringsStartsOnUnseenFacesCloserToTheTruth) {
+  const DescentRefiner& refiner = trainedRefiner();
+  ASSERT_EQ(refiner.stages.size(), 4u);
+  EXPECT_NO_THROW(refiner.validate(10));
+  std::mt19937_64 random(99);
+  double before = 0.0, after = 0.0;
+  constexpr int kFaces = 30;
+  for (int f = 0; f < kFaces; ++f) {
+    const DrawnFace face = drawFace(random);
+    const Eigen::Matrix2Xd start = offStart(face.points, random);
+    // The refiner takes every scheme landmark and moves only its own.
+    Eigen::Matrix2Xd all = Eigen::Matrix2Xd::Constant(2, 10, 7.0);
+    for (std::size_t i = 0; i < kLandmarks.size(); ++i) all.col(kLandmarks[i]) = start.col(i);
+    const Eigen::Matrix2Xd refinedAll = refinePoints(refiner, face.image, all);
+    Eigen::Matrix2Xd refined(2, 6);
+    for (std::size_t i = 0; i < kLandmarks.size(); ++i)
+      refined.col(i) = refinedAll.col(kLandmarks[i]);
+    EXPECT_EQ(refinedAll.col(0), Eigen::Vector2d(7.0, 7.0));
+    before += meanError(start, face.points) / kFaces;
+    after += meanError(refined, face.points) / kFaces;
+  }
+  EXPECT_GT(before, 0.08);
+  EXPECT_LT(after, 0.25 * before) << "before " << before << ", after " << after;
+}
+
+TEST(DescentRefinement, TrainingDoesNotDependOnTheThreadCount) {
+  const std::vector<DescentPhoto> photos = drawnPhotos(6, 5);
+  DescentTrainSettings settings;
+  settings.windows = {0.6};
+  settings.startsPerPhoto = 3;
+  settings.threads = 1;
+  const DescentRefiner one = trainDescentRefiner(photos, kLandmarks, 0, 1, settings);
+  settings.threads = 2;
+  const DescentRefiner two = trainDescentRefiner(photos, kLandmarks, 0, 1, settings);
+  EXPECT_TRUE(one.stages[0].weights.isApprox(two.stages[0].weights));
+  EXPECT_EQ(one.meanShape, two.meanShape);
+}
+
+TEST(DescentRefinement, EmptyRefinerOrNonFiniteStartLeavesThePointsAlone) {
+  const cv::Mat image(100, 100, CV_8UC1, cv::Scalar(128));
+  Eigen::Matrix2Xd points =
+      Eigen::Matrix2Xd::Random(2, 10) * 20.0 + Eigen::Matrix2Xd::Constant(2, 10, 50.0);
+  EXPECT_EQ(refinePoints(DescentRefiner{}, image, points), points);
+  points(0, kLandmarks[2]) = std::nan("");
+  const Eigen::Matrix2Xd out = refinePoints(trainedRefiner(), image, points);
+  EXPECT_TRUE(out.cwiseEqual(points).count() + 1 == points.size());  // the NaN is unequal to itself
+}
+
+TEST(DescentRefinement, SimilarityFrameRoundTripsAndFitsExactly) {
+  const Eigen::Matrix2Xd from = canonicalFace();
+  SimilarityFrame frame;
+  frame.scale = 37.0;
+  frame.angle = 0.3;
+  frame.translation = Eigen::Vector2d(120.0, -4.0);
+  Eigen::Matrix2Xd to(2, from.cols());
+  for (Eigen::Index i = 0; i < from.cols(); ++i) to.col(i) = frame.toImage(from.col(i));
+  const SimilarityFrame fitted = fitSimilarity(from, to);
+  EXPECT_NEAR(fitted.scale, 37.0, 1e-9);
+  EXPECT_NEAR(fitted.angle, 0.3, 1e-9);
+  EXPECT_TRUE(fitted.translation.isApprox(frame.translation, 1e-9));
+  EXPECT_TRUE(frame.toNormalised(to.col(3)).isApprox(from.col(3), 1e-12));
+}
+
+TEST(DescentRefinement, BadImagesAndPointsAreRefused) {
+  const Eigen::Matrix2Xd points = canonicalFace() * 50.0;
+  EXPECT_THROW(descentRegion(cv::Mat(), points, 0, 1), InputError);
+  EXPECT_THROW(descentRegion(cv::Mat(50, 50, CV_16UC1), points, 0, 1), InputError);
+  Eigen::Matrix2Xd sameEyes = points;
+  sameEyes.col(1) = sameEyes.col(0);
+  EXPECT_THROW(descentRegion(cv::Mat(50, 50, CV_8UC1), sameEyes, 0, 1), InputError);
+  DescentRefiner broken = trainedRefiner();
+  broken.stages[0].bias.resize(3);
+  EXPECT_THROW(broken.validate(10), Error);
+  broken = trainedRefiner();
+  EXPECT_THROW(broken.validate(5), Error);  // landmark 8 is not in a 5-point scheme
+}
+
+}  // namespace
+}  // namespace clm3d

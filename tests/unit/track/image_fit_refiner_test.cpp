@@ -1,0 +1,141 @@
+// The point refiner in the fit of still images: trained by the trainer's photo path
+// (trainPhotoRefiner) from renders of the fixture's procedural heads saved as annotated photos, it
+// refines every landmark they all mark, brings starts moved off a held-out head closer to its
+// truth, and ImageFitter and the Tracker apply it to the search's points unless told not to (the
+// tracker to a tracked frame's row only, not to the state the next frame starts from).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/refine/descent_refinement.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/track/batch_fit.hpp"
+#include "core/track/tracker.hpp"
+#include "core/train/refiner_training.hpp"
+#include "core/viz/image_file.hpp"
+#include "tests/support/fit_fixture.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace clm3d {
+namespace {
+
+namespace fs = std::filesystem;
+using test::FitScene;
+using test::fitTestModel;
+using test::kHeldOutHead;
+using test::makeFitScene;
+using test::meanPointError;
+
+// Writes the scene as DIR/NAME.png with its true points in NAME.pts; returns it as a photo.
+TrainingPhoto savePhoto(const fs::path& dir, const std::string& name, const FitScene& scene) {
+  TrainingPhoto photo;
+  photo.id = name + ".png";
+  photo.image = dir / photo.id;
+  writeImage(photo.image, scene.image);
+  photo.points = LandmarkSet(static_cast<int>(scene.truthPoints.cols()), 2);
+  for (int i = 0; i < photo.points.size(); ++i)
+    photo.points.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
+  photo.trusted.assign(static_cast<std::size_t>(photo.points.size()), true);
+  writeLandmarks(dir / (name + ".pts"), photo.points, Scheme::thesis25());
+  return photo;
+}
+
+struct RefinerFixture {
+  test::TempDir dir;
+  DescentRefiner refiner;
+  RefinerFixture() {
+    std::vector<TrainingPhoto> photos;
+    for (int head = 0; head < 4; ++head) {
+      for (const auto& [pitch, yaw] :
+           {std::pair{0.0, -8.0}, {5.0, 0.0}, {-5.0, 6.0}, {0.0, 12.0}}) {
+        photos.push_back(savePhoto(
+            dir.path(), "h" + std::to_string(head) + "-" + std::to_string(static_cast<int>(yaw)),
+            makeFitScene(fitTestModel(), pitch, yaw, head)));
+      }
+    }
+    TrainSettings settings;
+    settings.refinerStages = 3;
+    settings.refinerStarts = 12;
+    settings.threads = 2;
+    refiner = trainPhotoRefiner(photos, Scheme::thesis25(), settings);
+  }
+};
+
+const RefinerFixture& fixture() {
+  static const RefinerFixture f;
+  return f;
+}
+
+TEST(ImageFitRefiner, TrainedFromPhotosItBringsStartsCloserOnAHeldOutHead) {
+  const DescentRefiner& refiner = fixture().refiner;
+  ASSERT_EQ(refiner.stages.size(), 3u);
+  EXPECT_EQ(refiner.landmarks.size(), 25u);  // every point is marked in every photo
+  EXPECT_EQ(refiner.landmarks[static_cast<std::size_t>(refiner.leftEye)], 7);
+  EXPECT_EQ(refiner.landmarks[static_cast<std::size_t>(refiner.rightEye)], 10);
+
+  std::mt19937_64 random(3);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  double before = 0.0, after = 0.0;
+  for (const double yaw : {-4.0, 3.0, 9.0}) {
+    const FitScene scene = makeFitScene(fitTestModel(), 2.0, yaw, kHeldOutHead);
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d shift =
+          0.1 * scene.interOcular * Eigen::Vector2d(normal(random), normal(random));
+      const Eigen::Matrix2Xd start = scene.truthPoints.colwise() + shift;
+      before += meanPointError(start, scene.truthPoints) / scene.interOcular;
+      after += meanPointError(refinePoints(refiner, scene.image, start), scene.truthPoints) /
+               scene.interOcular;
+    }
+  }
+  EXPECT_LT(after, 0.6 * before) << "before " << before / 12 << ", after " << after / 12;
+}
+
+TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
+  const test::TempDir dir;
+  writeImage(dir / "face.png", scene.image);
+  LandmarkSet start(25, 2);
+  for (int i = 0; i < 25; ++i) start.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
+  writeLandmarks(dir / "start.pts", start, Scheme::thesis25());
+
+  ImageFitSettings plain;
+  plain.refine = false;
+  ImageFitter unrefined(model, plain);
+  const ImageFitOutcome searched = unrefined.fitFile(dir / "face.png", dir / "start.pts");
+  ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
+
+  ImageFitter refining(model, ImageFitSettings{});
+  const ImageFitOutcome refined =
+      refining.fitFile(dir / "face.png", dir / "start.pts", dir / "out.pts");
+  ASSERT_EQ(refined.status, ImageFitStatus::Ok) << refined.message;
+  const Eigen::Matrix2Xd expected = refinePoints(model.refiner, scene.image, searched.fit->points);
+  EXPECT_TRUE(refined.fit->points.isApprox(expected, 1e-9));
+  EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 0.0);
+  const LandmarkSet written = readLandmarks(dir / "out.pts", &Scheme::thesis25());
+  EXPECT_NEAR(written.point(12).x(), expected(0, 12), 1e-3);
+}
+
+TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead);
+  const auto trackOnce = [&](bool refine) {
+    TrackerSettings settings;
+    settings.refine = refine;
+    Tracker tracker(model, scene.camera, settings);
+    tracker.setState(scene.truth, -1);
+    return tracker.track(scene.image, 0, 0.0);
+  };
+  const TrackStep plain = trackOnce(false);
+  const TrackStep refined = trackOnce(true);
+  ASSERT_TRUE(plain.row.success && refined.row.success);
+  EXPECT_TRUE(plain.row.points.isApprox(plain.fit->points, 1e-12));
+  EXPECT_TRUE(refined.fit->state.pose.translation.isApprox(plain.fit->state.pose.translation));
+  EXPECT_TRUE(refined.row.points.isApprox(
+      refinePoints(model.refiner, scene.image, plain.fit->points), 1e-9));
+}
+
+}  // namespace
+}  // namespace clm3d
