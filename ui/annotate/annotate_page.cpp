@@ -125,7 +125,10 @@ QAction* AnnotatePage::addPageAction(const QString& objectName, const QString& t
   action->setShortcuts(keys);
   action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
   QString shown = tip;
-  if (!keys.isEmpty()) shown += QStringLiteral(" (%1)").arg(keys.first().toString());
+  if (!keys.isEmpty()) {
+    shown += QStringLiteral(" (%1)").arg(keys.first().toString());
+    listShortcut(keys.first(), tip);
+  }
   action->setToolTip(shown);
   addAction(action);
   return action;

@@ -1,10 +1,15 @@
 // The base of every page of clm3d-studio's main window (annotate, train, track, evaluate): the
 // shell hands each page the open project and asks it about unsaved work before closing, so pages
-// need not know about each other or the window.
+// need not know about each other or the window. A page binds its keys with addShortcut (or lists
+// a QAction's with listShortcut), so that Help > Keyboard Shortcuts shows what it binds.
 #pragma once
 
+#include <QKeySequence>
+#include <QList>
+#include <QShortcut>
 #include <QString>
 #include <QWidget>
+#include <utility>
 
 namespace clm3d {
 struct Project;
@@ -12,10 +17,19 @@ struct Project;
 
 namespace clm3d::ui {
 
+// One key of a page and what it does, as the shortcut list shows it.
+struct PageShortcut {
+  QString keys;
+  QString what;
+};
+
 class Page : public QWidget {
   Q_OBJECT
  public:
   using QWidget::QWidget;
+
+  // The page's own keys (active while the focus is in the page), in the order bound.
+  const QList<PageShortcut>& shortcuts() const { return shortcuts_; }
 
   virtual QString title() const = 0;
   // The project just opened (or nullptr when none is). The project outlives the call until the
@@ -34,6 +48,24 @@ class Page : public QWidget {
  signals:
   void projectModified();
   void statusMessage(const QString& text);
+
+ protected:
+  // Runs `action` when `keys` are pressed while the focus is in the page, and lists the key as
+  // `what`.
+  template <typename Action>
+  void addShortcut(const QKeySequence& keys, const QString& what, Action&& action) {
+    auto* shortcut = new QShortcut(keys, this);
+    shortcut->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(shortcut, &QShortcut::activated, this, std::forward<Action>(action));
+    listShortcut(keys, what);
+  }
+  // Lists a key bound elsewhere (a QAction's shortcut).
+  void listShortcut(const QKeySequence& keys, const QString& what) {
+    shortcuts_.append({keys.toString(QKeySequence::NativeText), what});
+  }
+
+ private:
+  QList<PageShortcut> shortcuts_;
 };
 
 }  // namespace clm3d::ui

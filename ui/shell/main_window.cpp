@@ -318,11 +318,16 @@ void MainWindow::showShortcuts() {
     row(QStringLiteral("Ctrl+%1").arg(i + 1), tr("Show the %1 page").arg(pages_[i]->title()));
   }
   row(QKeySequence(QKeySequence::HelpContents).toString(QKeySequence::NativeText), tr("This list"));
+  for (const Page* page : pages_) {
+    if (page->shortcuts().isEmpty()) continue;
+    rows += QStringLiteral("<tr><td colspan=2><br><b>%1</b></td></tr>")
+                .arg(tr("%1 page (while it has the focus)").arg(page->title()));
+    for (const PageShortcut& shortcut : page->shortcuts()) row(shortcut.keys, shortcut.what);
+  }
   QMessageBox box(QMessageBox::Information, tr("Keyboard shortcuts"),
                   QStringLiteral("<table cellspacing=6>%1</table>").arg(rows), QMessageBox::Close,
                   this);
   box.setObjectName(QStringLiteral("shortcutsDialog"));
-  box.setInformativeText(tr("Each page lists its own shortcuts in its documentation."));
   box.exec();
 }
 

@@ -12,7 +12,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QShortcut>
 #include <QStyle>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -248,24 +247,22 @@ void TrackPage::buildLayout() {
 }
 
 void TrackPage::connectShortcuts() {
-  const auto shortcut = [this](const QKeySequence& keys, auto&& action) {
-    auto* s = new QShortcut(keys, this);
-    s->setContext(Qt::WidgetWithChildrenShortcut);
-    connect(s, &QShortcut::activated, this, std::forward<decltype(action)>(action));
-  };
-  shortcut(Qt::Key_Space, [this] { player_->togglePlaying(); });
-  shortcut(Qt::Key_Left, [this] { setCurrentFrame(current_ - 1); });
-  shortcut(Qt::Key_Right, [this] { setCurrentFrame(current_ + 1); });
-  shortcut(Qt::Key_Home, [this] { setCurrentFrame(0); });
-  shortcut(Qt::Key_End, [this] { setCurrentFrame(session_.video().frameCount - 1); });
-  shortcut(Qt::Key_K, [this] { toggleKeyframe(); });
-  shortcut(Qt::Key_P, [this] { patchesCheck_->toggle(); });
-  shortcut(Qt::Key_R, [this] { retrackFromCurrentFrame(); });
-  shortcut(QKeySequence::Undo, [this] { undo_.undo(); });
-  shortcut(QKeySequence::Redo, [this] { undo_.redo(); });
-  shortcut(QKeySequence::Save, [this] { save(); });
-  shortcut(QKeySequence(QStringLiteral("Ctrl+T")), [this] { startTracking(); });
-  shortcut(Qt::Key_Escape, [this] { runner_->cancel(); });
+  addShortcut(Qt::Key_Space, tr("Play or pause"), [this] { player_->togglePlaying(); });
+  addShortcut(Qt::Key_Left, tr("Previous frame"), [this] { setCurrentFrame(current_ - 1); });
+  addShortcut(Qt::Key_Right, tr("Next frame"), [this] { setCurrentFrame(current_ + 1); });
+  addShortcut(Qt::Key_Home, tr("First frame"), [this] { setCurrentFrame(0); });
+  addShortcut(Qt::Key_End, tr("Last frame"),
+              [this] { setCurrentFrame(session_.video().frameCount - 1); });
+  addShortcut(Qt::Key_K, tr("Mark or unmark the frame as a keyframe"),
+              [this] { toggleKeyframe(); });
+  addShortcut(Qt::Key_P, tr("Show or hide the patches"), [this] { patchesCheck_->toggle(); });
+  addShortcut(Qt::Key_R, tr("Re-track from this frame"), [this] { retrackFromCurrentFrame(); });
+  addShortcut(QKeySequence::Undo, tr("Undo"), [this] { undo_.undo(); });
+  addShortcut(QKeySequence::Redo, tr("Redo"), [this] { undo_.redo(); });
+  addShortcut(QKeySequence::Save, tr("Save the ground truth"), [this] { save(); });
+  addShortcut(QKeySequence(QStringLiteral("Ctrl+T")), tr("Track the video"),
+              [this] { startTracking(); });
+  addShortcut(Qt::Key_Escape, tr("Cancel the running job"), [this] { runner_->cancel(); });
 }
 
 void TrackPage::setProject(Project* project) {

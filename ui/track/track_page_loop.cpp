@@ -4,7 +4,6 @@
 // request, and the keyboard review. The rules themselves are core's (core/track/correction_loop).
 #include <QBoxLayout>
 #include <QPushButton>
-#include <QShortcut>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
@@ -72,19 +71,17 @@ void TrackPage::buildLoopControls(QBoxLayout* top, QBoxLayout* side) {
   loopTimer_->setInterval(kLoopDelayMs);
   connect(loopTimer_, &QTimer::timeout, this, &TrackPage::startPendingLoop);
 
-  const auto shortcut = [this](const QKeySequence& keys, auto&& action) {
-    auto* s = new QShortcut(keys, this);
-    s->setContext(Qt::WidgetWithChildrenShortcut);
-    connect(s, &QShortcut::activated, this, std::forward<decltype(action)>(action));
-  };
-  shortcut(Qt::Key_N, [this] { goToNextToReview(1); });
-  shortcut(QKeySequence(QStringLiteral("Shift+N")), [this] { goToNextToReview(-1); });
-  shortcut(Qt::Key_J, [this] { goToNextKeyframe(1); });
-  shortcut(QKeySequence(QStringLiteral("Shift+J")), [this] { goToNextKeyframe(-1); });
-  shortcut(Qt::Key_A, [this] { acceptAsKeyframe(); });
-  shortcut(Qt::Key_L, [this] { setLoopEnabled(!loopEnabled()); });
-  shortcut(QKeySequence(QStringLiteral("Shift+R")),
-           [this] { retrackSpanFrom(current_, RetrackDirection::Backward); });
+  addShortcut(Qt::Key_N, tr("Next frame to review"), [this] { goToNextToReview(1); });
+  addShortcut(QKeySequence(QStringLiteral("Shift+N")), tr("Previous frame to review"),
+              [this] { goToNextToReview(-1); });
+  addShortcut(Qt::Key_J, tr("Next keyframe"), [this] { goToNextKeyframe(1); });
+  addShortcut(QKeySequence(QStringLiteral("Shift+J")), tr("Previous keyframe"),
+              [this] { goToNextKeyframe(-1); });
+  addShortcut(Qt::Key_A, tr("Accept the frame as a keyframe"), [this] { acceptAsKeyframe(); });
+  addShortcut(Qt::Key_L, tr("Correction loop on or off"),
+              [this] { setLoopEnabled(!loopEnabled()); });
+  addShortcut(QKeySequence(QStringLiteral("Shift+R")), tr("Re-track backwards from this frame"),
+              [this] { retrackSpanFrom(current_, RetrackDirection::Backward); });
 }
 
 void TrackPage::setTrackerSettings(const TrackerSettings& settings) {

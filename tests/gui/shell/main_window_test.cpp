@@ -31,7 +31,9 @@ namespace {
 // A page that records what the shell tells it and reports the state a test gives it.
 class RecordingPage : public Page {
  public:
-  explicit RecordingPage(QString title) : title_(std::move(title)) {}
+  explicit RecordingPage(QString title) : title_(std::move(title)) {
+    addShortcut(Qt::Key_F7, QStringLiteral("Record a key of ") + title_, [this] { ++keyPresses; });
+  }
   QString title() const override { return title_; }
   void setProject(Project* project) override {
     project_ = project;
@@ -58,6 +60,7 @@ class RecordingPage : public Page {
   int saveCalls = 0;
   int setProjectCalls = 0;
   int preferencesCalls = 0;
+  int keyPresses = 0;
 
  private:
   QString title_;
@@ -216,6 +219,32 @@ class MainWindowTest : public QObject {
     QVERIFY(!window_->showPageNamed("evaluate"));
     window_->findChild<QListWidget*>("pageList")->setCurrentRow(0);
     QCOMPARE(window_->currentPage(), first_);
+  }
+
+  // Help > Keyboard Shortcuts lists the window's keys and, under each page's title, the keys that
+  // page binds with addShortcut; the key works while the page has the focus.
+  void theShortcutListShowsEveryPagesKeys() {
+    QString text;
+    test::onNextMessageBox(QStringLiteral("shortcutsDialog"), [&](QMessageBox* box) {
+      text = box->text();
+      box->close();
+    });
+    QAction* list = nullptr;
+    for (QAction* action : window_->findChildren<QAction*>()) {
+      if (action->text() == QStringLiteral("&Keyboard Shortcuts")) list = action;
+    }
+    QVERIFY(list);
+    list->trigger();
+    QVERIFY(text.contains(QStringLiteral("Show the Train page")));
+    QVERIFY(text.contains(QStringLiteral("Record a key of Annotate")));
+    QVERIFY(text.contains(QStringLiteral("Record a key of Train")));
+    QVERIFY(text.contains(QStringLiteral("F7")));
+    QCOMPARE(first_->shortcuts().size(), 1);
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    first_->setFocus();
+    QTest::keyClick(first_, Qt::Key_F7);
+    QCOMPARE(first_->keyPresses, 1);
   }
 
   void theWindowStateIsSavedOnClose() {
