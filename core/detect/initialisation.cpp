@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/fit/shape_projector.hpp"
+#include "core/geometry/similarity2.hpp"
 
 namespace clm3d {
 
@@ -199,30 +200,6 @@ class PointsProblem {
   Eigen::Matrix2Xd points_;
   Eigen::MatrixXd jacobian_;
 };
-
-// 2D similarity target ~ s R(theta) source + t (least squares, Umeyama in complex form).
-struct Similarity2 {
-  double scale = 1.0;
-  double angle = 0.0;
-  Eigen::Vector2d translation = Eigen::Vector2d::Zero();
-};
-
-Similarity2 alignSimilarity2(const Eigen::Matrix2Xd& source, const Eigen::Matrix2Xd& target) {
-  const Eigen::Vector2d ms = source.rowwise().mean();
-  const Eigen::Vector2d mt = target.rowwise().mean();
-  const Eigen::Matrix2Xd s = source.colwise() - ms;
-  const Eigen::Matrix2Xd t = target.colwise() - mt;
-  const double a = (s.row(0).cwiseProduct(t.row(0)) + s.row(1).cwiseProduct(t.row(1))).sum();
-  const double b = (s.row(0).cwiseProduct(t.row(1)) - s.row(1).cwiseProduct(t.row(0))).sum();
-  const double norm = s.squaredNorm();
-  Similarity2 result;
-  if (norm <= 0.0) return result;
-  result.scale = std::hypot(a, b) / norm;
-  result.angle = std::atan2(b, a);
-  const Eigen::Matrix2d r = Eigen::Rotation2Dd(result.angle).toRotationMatrix();
-  result.translation = mt - result.scale * r * ms;
-  return result;
-}
 
 void checkShapeSize(const ClmModel& model, const FitState& state) {
   if (state.shape.size() != model.shape.modeCount()) {
