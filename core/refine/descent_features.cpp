@@ -1,6 +1,5 @@
 #include "core/refine/descent_features.hpp"
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
@@ -33,41 +32,7 @@ void normaliseBlock(float* values, int count) {
 
 }  // namespace
 
-Eigen::Vector2d SimilarityFrame::toImage(const Eigen::Vector2d& normalised) const {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return scale * Eigen::Vector2d(c * normalised.x() - s * normalised.y(),
-                                 s * normalised.x() + c * normalised.y()) +
-         translation;
-}
-
-Eigen::Vector2d SimilarityFrame::toNormalised(const Eigen::Vector2d& image) const {
-  const Eigen::Vector2d d = (image - translation) / scale;
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
-}
-
-SimilarityFrame fitSimilarity(const Eigen::Matrix2Xd& from, const Eigen::Matrix2Xd& to) {
-  if (from.cols() != to.cols() || from.cols() < 2)
-    throw Error("fitSimilarity: need two sets of the same size, at least 2 points");
-  const Eigen::Vector2d fromMean = from.rowwise().mean();
-  const Eigen::Vector2d toMean = to.rowwise().mean();
-  double a = 0.0, b = 0.0, norm = 0.0;
-  for (Eigen::Index i = 0; i < from.cols(); ++i) {
-    const Eigen::Vector2d p = from.col(i) - fromMean, q = to.col(i) - toMean;
-    a += p.dot(q);
-    b += p.x() * q.y() - p.y() * q.x();
-    norm += p.squaredNorm();
-  }
-  if (!(norm > 0.0)) throw Error("fitSimilarity: the points coincide");
-  SimilarityFrame frame;
-  frame.scale = std::hypot(a, b) / norm;
-  frame.angle = std::atan2(b, a);
-  frame.translation = Eigen::Vector2d::Zero();
-  frame.translation = toMean - frame.toImage(fromMean);
-  return frame;
-}
-
-Eigen::VectorXf descentFeatures(const cv::Mat& grey, const SimilarityFrame& frame,
+Eigen::VectorXf descentFeatures(const cv::Mat& grey, const Similarity2& frame,
                                 const Eigen::Matrix2Xd& points, double window) {
   if (grey.type() != CV_32FC1) throw Error("descentFeatures: need a float grey image");
   const int n = static_cast<int>(points.cols());
@@ -80,7 +45,7 @@ Eigen::VectorXf descentFeatures(const cv::Mat& grey, const SimilarityFrame& fram
   constexpr int side = kSamples + 2;
   cv::Mat patch(side, side, CV_32FC1);
   for (int p = 0; p < n; ++p) {
-    const Eigen::Vector2d centre = frame.toImage(points.col(p));
+    const Eigen::Vector2d centre = frame.apply(Eigen::Vector2d(points.col(p)));
     // Maps patch pixel (u, v) to the image: centre + R * ((u, v) - (side - 1) / 2) * step.
     const double half = (side - 1) / 2.0;
     cv::Matx23d map(c, -s, centre.x() - c * half + s * half, s, c,

@@ -18,24 +18,22 @@ namespace {
 // Margin of the region around the points, in eye distances (the widest window reaches 0.4).
 constexpr double kRegionMargin = 1.2;
 
-Eigen::Matrix2Xd mapped(const SimilarityFrame& frame, const Eigen::Matrix2Xd& points,
-                        bool toNormalised) {
-  Eigen::Matrix2Xd out(2, points.cols());
-  for (Eigen::Index i = 0; i < points.cols(); ++i) {
-    out.col(i) = toNormalised ? frame.toNormalised(points.col(i)) : frame.toImage(points.col(i));
-  }
-  return out;
+// The points moved by a stage's step (2 N values, x then y per point) in `frame`'s normalised
+// coordinates.
+Eigen::Matrix2Xd stepped(const Similarity2& frame, const Eigen::Matrix2Xd& points,
+                         const Eigen::VectorXf& step) {
+  const Eigen::Matrix2Xd moved =
+      frame.inverse(points) +
+      Eigen::Map<const Eigen::Matrix2Xf>(step.data(), 2, points.cols()).cast<double>();
+  return frame.apply(moved);
 }
 
 Eigen::Matrix2Xd applyStage(const DescentStage& stage, const Eigen::Matrix2Xd& meanShape,
                             const cv::Mat& grey, const Eigen::Matrix2Xd& points) {
-  const SimilarityFrame frame = fitSimilarity(meanShape, points);
-  Eigen::Matrix2Xd normalised = mapped(frame, points, true);
-  const Eigen::VectorXf features = descentFeatures(grey, frame, normalised, stage.window);
-  const Eigen::VectorXf step = stage.weights * (features - stage.featureMean) + stage.bias;
-  normalised +=
-      Eigen::Map<const Eigen::Matrix2Xf>(step.data(), 2, normalised.cols()).cast<double>();
-  return mapped(frame, normalised, false);
+  const Similarity2 frame = alignSimilarity2(meanShape, points);
+  const Eigen::VectorXf features =
+      descentFeatures(grey, frame, frame.inverse(points), stage.window);
+  return stepped(frame, points, stage.weights * (features - stage.featureMean) + stage.bias);
 }
 
 Eigen::Matrix2Xd withEyesAtOrigin(const Eigen::Matrix2Xd& shape, int leftEye, int rightEye) {
@@ -50,7 +48,7 @@ Eigen::Matrix2Xd meanShapeOf(const std::vector<DescentPhoto>& photos, int leftEy
   for (int round = 0; round < 4; ++round) {
     Eigen::Matrix2Xd sum = Eigen::Matrix2Xd::Zero(2, mean.cols());
     for (const DescentPhoto& photo : photos)
-      sum += mapped(fitSimilarity(mean, photo.truth), photo.truth, true);
+      sum += alignSimilarity2(mean, photo.truth).inverse(photo.truth);
     mean = withEyesAtOrigin(sum / static_cast<double>(photos.size()), leftEye, rightEye);
   }
   return mean;
@@ -113,27 +111,27 @@ DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points
   const double eyeDistance = (points.col(leftEye) - points.col(rightEye)).norm();
   if (!(eyeDistance > 0.0) || !points.allFinite())
     throw InputError("refine: the points' eyes coincide or are not finite");
-  cv::Mat grey;
-  if (image.type() == CV_8UC3) {
-    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  } else if (image.type() == CV_8UC4) {
-    cv::cvtColor(image, grey, cv::COLOR_BGRA2GRAY);
-  } else if (image.type() == CV_8UC1 || image.type() == CV_32FC1) {
-    grey = image;
-  } else {
+  const int type = image.type();
+  if (type != CV_8UC1 && type != CV_8UC3 && type != CV_8UC4 && type != CV_32FC1)
     throw InputError("refine: unsupported image type (need 8-bit grey, BGR or BGRA, or float)");
-  }
   const double margin = kRegionMargin * eyeDistance;
   const Eigen::Vector2d low = points.rowwise().minCoeff().array() - margin;
   const Eigen::Vector2d high = points.rowwise().maxCoeff().array() + margin;
   const auto clampTo = [](double v, int lo, int hi) {
     return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
   };
-  const int x0 = clampTo(std::floor(low.x()), 0, grey.cols - 1);
-  const int y0 = clampTo(std::floor(low.y()), 0, grey.rows - 1);
-  const int x1 = clampTo(std::ceil(high.x()) + 1, x0 + 1, grey.cols);
-  const int y1 = clampTo(std::ceil(high.y()) + 1, y0 + 1, grey.rows);
-  const cv::Mat roi = grey(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+  const int x0 = clampTo(std::floor(low.x()), 0, image.cols - 1);
+  const int y0 = clampTo(std::floor(low.y()), 0, image.rows - 1);
+  const int x1 = clampTo(std::ceil(high.x()) + 1, x0 + 1, image.cols);
+  const int y1 = clampTo(std::ceil(high.y()) + 1, y0 + 1, image.rows);
+  // The face's part only is turned grey (a whole photo's conversion cost more than the refiner).
+  const cv::Mat part = image(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+  cv::Mat roi = part;
+  if (type == CV_8UC3) {
+    cv::cvtColor(part, roi, cv::COLOR_BGR2GRAY);
+  } else if (type == CV_8UC4) {
+    cv::cvtColor(part, roi, cv::COLOR_BGRA2GRAY);
+  }
   const double scale = kDescentEyeDistance / eyeDistance;
   const int width = std::max(1, static_cast<int>(std::lround(roi.cols * scale)));
   const int height = std::max(1, static_cast<int>(std::lround(roi.rows * scale)));
@@ -200,6 +198,7 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
     for (int k = 0; k < perPhoto; ++k)
       starts[p * perPhoto + k] = perturbedStart(truth, eyeDistance, settings, random);
   }
+  std::vector<Similarity2> frames(static_cast<std::size_t>(m));
   for (double window : settings.windows) {
     Eigen::MatrixXf features(d, m);
     Eigen::MatrixXf targets(2 * n, m);
@@ -207,10 +206,10 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
         m, settings.threads,
         [&](int s) {
           const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
-          const SimilarityFrame frame = fitSimilarity(refiner.meanShape, starts[s]);
-          const Eigen::Matrix2Xd start = mapped(frame, starts[s], true);
+          const Similarity2& frame = frames[s] = alignSimilarity2(refiner.meanShape, starts[s]);
+          const Eigen::Matrix2Xd start = frame.inverse(starts[s]);
           features.col(s) = descentFeatures(photo.region.grey, frame, start, window);
-          const Eigen::Matrix2Xd step = mapped(frame, photo.truth, true) - start;
+          const Eigen::Matrix2Xd step = frame.inverse(photo.truth) - start;
           targets.col(s) = Eigen::Map<const Eigen::VectorXd>(step.data(), 2 * n).cast<float>();
         },
         cancel);
@@ -221,13 +220,9 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
     stage.bias = targets.rowwise().mean();
     targets.colwise() -= stage.bias;
     stage.weights = ridgeRegression(features, targets, settings.ridge);
-    parallelFor(
-        m, settings.threads,
-        [&](int s) {
-          const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
-          starts[s] = applyStage(stage, refiner.meanShape, photo.region.grey, starts[s]);
-        },
-        cancel);
+    // The next stage learns from the starts this one moved, with the features already computed.
+    const Eigen::MatrixXf steps = (stage.weights * features).colwise() + stage.bias;
+    for (int s = 0; s < m; ++s) starts[s] = stepped(frames[s], starts[s], steps.col(s));
     refiner.stages.push_back(std::move(stage));
   }
   return refiner;

@@ -1,7 +1,7 @@
 // Tests of the point refiner (core/refine): on drawn "faces" (dark discs of different sizes at
 // known points over a noisy background, each face moved, scaled and turned at random), a cascade
-// trained on some faces brings perturbed starts on other faces much closer to the truth; the
-// similarity frame round-trips; an empty refiner or a start that is not finite leaves the points
+// trained on some faces brings perturbed starts on other faces much closer to the truth; an empty
+// refiner or a start that is not finite leaves the points
 // as they are; bad images are refused.
 #include "core/refine/descent_refinement.hpp"
 
@@ -12,7 +12,6 @@
 #include <random>
 
 #include "core/common/error.hpp"
-#include "core/refine/descent_features.hpp"
 
 namespace clm3d {
 namespace {
@@ -142,21 +141,6 @@ TEST(DescentRefinement, EmptyRefinerOrNonFiniteStartLeavesThePointsAlone) {
   points(0, kLandmarks[2]) = std::nan("");
   const Eigen::Matrix2Xd out = refinePoints(trainedRefiner(), image, points);
   EXPECT_TRUE(out.cwiseEqual(points).count() + 1 == points.size());  // the NaN is unequal to itself
-}
-
-TEST(DescentRefinement, SimilarityFrameRoundTripsAndFitsExactly) {
-  const Eigen::Matrix2Xd from = canonicalFace();
-  SimilarityFrame frame;
-  frame.scale = 37.0;
-  frame.angle = 0.3;
-  frame.translation = Eigen::Vector2d(120.0, -4.0);
-  Eigen::Matrix2Xd to(2, from.cols());
-  for (Eigen::Index i = 0; i < from.cols(); ++i) to.col(i) = frame.toImage(from.col(i));
-  const SimilarityFrame fitted = fitSimilarity(from, to);
-  EXPECT_NEAR(fitted.scale, 37.0, 1e-9);
-  EXPECT_NEAR(fitted.angle, 0.3, 1e-9);
-  EXPECT_TRUE(fitted.translation.isApprox(frame.translation, 1e-9));
-  EXPECT_TRUE(frame.toNormalised(to.col(3)).isApprox(from.col(3), 1e-12));
 }
 
 TEST(DescentRefinement, BadImagesAndPointsAreRefused) {
