@@ -57,7 +57,6 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   if (progress) progress(0.0, "refiner");
   // Two regions per photo (as it is, mirrored); a slot stays empty when the photo is unusable.
   std::vector<DescentPhoto> slots(2 * photos.size());
-  std::vector<char> usable(2 * photos.size(), 0);
   parallelFor(
       static_cast<int>(photos.size()), settings.threads,
       [&](int index) {
@@ -79,13 +78,12 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
           DescentPhoto& slot = slots[2 * static_cast<std::size_t>(index) + side];
           slot.region = descentRegion(side == 0 ? image : flipped, points, leftEye, rightEye);
           slot.truth = slot.region.toRegion(points);
-          usable[2 * static_cast<std::size_t>(index) + side] = 1;
         }
       },
       cancel);
   std::vector<DescentPhoto> faces;
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    if (usable[k]) faces.push_back(std::move(slots[k]));
+  for (DescentPhoto& slot : slots) {
+    if (!slot.region.grey.empty()) faces.push_back(std::move(slot));
   }
   if (faces.empty()) return {};
   if (progress) progress(0.3, "refiner");
