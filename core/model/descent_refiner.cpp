@@ -1,5 +1,6 @@
 #include "core/model/descent_refiner.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "core/common/error.hpp"
@@ -7,7 +8,10 @@
 namespace clm3d {
 
 void DescentRefiner::validate(int schemeSize) const {
-  if (stages.empty()) return;
+  if (stages.empty()) {
+    if (!check.empty()) throw Error("a check without refiner stages");
+    return;
+  }
   const auto n = static_cast<Eigen::Index>(landmarks.size());
   const auto fail = [](const std::string& what) { throw Error(what); };
   if (n < 3) fail("needs at least 3 landmarks");
@@ -27,6 +31,14 @@ void DescentRefiner::validate(int schemeSize) const {
       fail(where + ": array sizes do not match " + std::to_string(n) + " landmarks");
     if (!stage.featureMean.allFinite() || !stage.weights.allFinite() || !stage.bias.allFinite())
       fail(where + ": values not finite");
+  }
+  if (!check.empty()) {
+    if (!(check.window > 0.0 && check.window <= 4.0)) fail("check.window must be in (0, 4]");
+    if (check.featureMean.size() != d || check.weights.size() != d)
+      fail("check: array sizes do not match " + std::to_string(n) + " landmarks");
+    if (!check.featureMean.allFinite() || !check.weights.allFinite() ||
+        !std::isfinite(check.bias) || !std::isfinite(check.slope) || !std::isfinite(check.offset))
+      fail("check: values not finite");
   }
 }
 

@@ -1,7 +1,8 @@
 // The learnt part of a model's point refinement (core/refine/descent_refinement.hpp): a cascade
 // of linear regressions from gradient-orientation features around the points to their
-// corrections, in the frame that maps the mean shape onto the current points. Plain data here, so
-// that the model file reads and writes it without an image library.
+// corrections, in the frame that maps the mean shape onto the current points, and the check that
+// tells whether refined points sit on a face's landmarks (core/refine/descent_check.hpp). Plain
+// data here, so that the model file reads and writes it without an image library.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,15 +20,29 @@ struct DescentStage {
   Eigen::VectorXf bias;         // 2 N
 };
 
+// A linear score of the features at the refined points, turned into the probability that the
+// points are right (their mean error under a fixed share of the eye distance) by a logistic curve
+// fitted to the training scores: p = 1 / (1 + exp(-(slope * score + offset))).
+struct DescentCheck {
+  double window = 0.5;          // feature window, in eye distances of the mean shape
+  Eigen::VectorXf featureMean;  // subtracted before the score
+  Eigen::VectorXf weights;      // one per feature
+  double bias = 0.0;
+  double slope = 1.0, offset = 0.0;
+
+  bool empty() const { return weights.size() == 0; }
+};
+
 struct DescentRefiner {
   std::vector<int> landmarks;     // scheme indices of the refined points (N)
   int leftEye = 0, rightEye = 1;  // positions in `landmarks` of the eye centres
   Eigen::Matrix2Xd meanShape;     // 2 x N, eye distance 1, the eyes' midpoint at the origin
   std::vector<DescentStage> stages;
+  DescentCheck check;  // empty: the model cannot tell right refined points from wrong ones
 
   bool empty() const { return stages.empty(); }
   // Throws Error naming the first inconsistency (sizes, indices, non-finite values); `schemeSize`
-  // bounds the landmark indices. An empty refiner is valid.
+  // bounds the landmark indices. An empty refiner is valid; a check needs stages.
   void validate(int schemeSize) const;
 };
 

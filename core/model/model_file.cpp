@@ -186,14 +186,23 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
           {"views", views}};
 }
 
-// The "refiner" member of the header (version 4; absent when the model has none).
+// The "refiner" member of the header (version 4; absent when the model has none), with its
+// "check" (version 5; absent when the refiner has none).
 json refinerJson(const DescentRefiner& refiner) {
   json windows = json::array();
   for (const DescentStage& stage : refiner.stages) windows.push_back(stage.window);
-  return {{"landmarks", refiner.landmarks},
-          {"leftEye", refiner.leftEye},
-          {"rightEye", refiner.rightEye},
-          {"windows", windows}};
+  json out = {{"landmarks", refiner.landmarks},
+              {"leftEye", refiner.leftEye},
+              {"rightEye", refiner.rightEye},
+              {"windows", windows}};
+  if (!refiner.check.empty()) {
+    const DescentCheck& check = refiner.check;
+    out["check"] = {{"window", check.window},
+                    {"bias", check.bias},
+                    {"slope", check.slope},
+                    {"offset", check.offset}};
+  }
+  return out;
 }
 
 [[noreturn]] void fieldError(const std::string& field, const std::string& what) {
@@ -274,8 +283,20 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
         static_cast<int>(refiner.integer("rightEye", 0, std::max<std::int64_t>(n - 1, 0)));
     const Header& windows = array(refiner, "windows", kMaxScales);
     if (windows.empty()) fieldError(refiner.name("windows"), "a refiner needs at least one stage");
-    refiner.rejectUnknown();
     const auto d = static_cast<std::uint64_t>(n) * kDescentFeaturesPerPoint;
+    // Version 5: the refiner's check, its two arrays after the stages'.
+    if (version >= 5 && refiner.has("check")) {
+      JsonFields check = refiner.object("check");
+      DescentCheck& out = model.refiner.check;
+      out.window = number(check, "window");
+      out.bias = number(check, "bias");
+      out.slope = number(check, "slope");
+      out.offset = number(check, "offset");
+      check.rejectUnknown();
+      addValues(floats, d, 2, check.path());
+      out.weights.resize(1);  // marks the check present; sized once the byte count is checked
+    }
+    refiner.rejectUnknown();
     addValues(doubles, 2 * static_cast<std::uint64_t>(n), 1, refiner.path());
     for (const Header& window : windows) {
       if (!window.is_number()) fieldError(refiner.name("windows"), "entries must be numbers");
@@ -457,6 +478,12 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readArray(reader, stage.weights);
       readArray(reader, stage.bias);
     }
+    if (!model.refiner.check.empty()) {
+      model.refiner.check.featureMean.resize(d);
+      model.refiner.check.weights.resize(d);
+      readArray(reader, model.refiner.check.featureMean);
+      readArray(reader, model.refiner.check.weights);
+    }
   }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
     const Scheme scheme = model.scheme();
@@ -545,6 +572,10 @@ std::string serializeModel(const ClmModel& model) {
       appendFloats(payload, stage.featureMean);
       appendFloats(payload, stage.weights);
       appendFloats(payload, stage.bias);
+    }
+    if (!model.refiner.check.empty()) {
+      appendFloats(payload, model.refiner.check.featureMean);
+      appendFloats(payload, model.refiner.check.weights);
     }
   }
   std::string file(kMagic);

@@ -18,8 +18,9 @@ namespace clm3d {
 // 2: patch experts per scale, mirrored views stored as a reference to their source view.
 // 3: experts of several units (a scale's "expertUnits"; weights, biases and unit weights).
 // 4: an optional point refiner (header "refiner"; its arrays after the views').
-// Version 1 files (no experts, every view stored), version 2 and 3 files still load.
-inline constexpr std::uint32_t kModelFormatVersion = 4;
+// 5: the refiner's optional check (refiner "check"; its two arrays after the stages').
+// Version 1 files (no experts, every view stored) and versions 2 to 4 still load.
+inline constexpr std::uint32_t kModelFormatVersion = 5;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

@@ -9,7 +9,9 @@
 
 #include "core/common/error.hpp"
 #include "core/common/parallel_for.hpp"
+#include "core/refine/descent_check.hpp"
 #include "core/refine/descent_features.hpp"
+#include "core/refine/ridge_regression.hpp"
 
 namespace clm3d {
 
@@ -52,47 +54,6 @@ Eigen::Matrix2Xd meanShapeOf(const std::vector<DescentPhoto>& photos, int leftEy
     mean = withEyesAtOrigin(sum / static_cast<double>(photos.size()), leftEye, rightEye);
   }
   return mean;
-}
-
-// A start for training: the truth moved by a random similarity and per-point offsets.
-Eigen::Matrix2Xd perturbedStart(const Eigen::Matrix2Xd& truth, double eyeDistance,
-                                const DescentTrainSettings& settings, std::mt19937_64& random) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  const double scale = std::exp(settings.scale * normal(random));
-  const double roll = settings.roll * normal(random);
-  const Eigen::Vector2d shift =
-      settings.shift * eyeDistance * Eigen::Vector2d(normal(random), normal(random));
-  const Eigen::Vector2d centre = truth.rowwise().mean();
-  const double c = std::cos(roll) * scale, s = std::sin(roll) * scale;
-  Eigen::Matrix2Xd start(2, truth.cols());
-  for (Eigen::Index i = 0; i < truth.cols(); ++i) {
-    const Eigen::Vector2d d = truth.col(i) - centre;
-    const Eigen::Vector2d own =
-        settings.jitter * eyeDistance * Eigen::Vector2d(normal(random), normal(random));
-    start.col(i) =
-        centre + shift + Eigen::Vector2d(c * d.x() - s * d.y(), s * d.x() + c * d.y()) + own;
-  }
-  return start;
-}
-
-// The ridge regression of centred targets (outputs x samples) on centred features (features x
-// samples): weights W minimising |T - W F|^2 + lambda |W|^2, lambda = `ridge` times the features'
-// mean variance times the sample count. Solved in the smaller of the two equivalent forms: with
-// fewer samples than features, W = T (F^T F + lambda I)^-1 F^T.
-Eigen::MatrixXf ridgeRegression(const Eigen::MatrixXf& features, const Eigen::MatrixXf& targets,
-                                double ridge) {
-  const Eigen::Index d = features.rows(), m = features.cols();
-  const double lambda = ridge * features.cast<double>().squaredNorm() / static_cast<double>(d);
-  if (m < d) {
-    Eigen::MatrixXd kernel = (features.transpose() * features).cast<double>();
-    kernel.diagonal().array() += lambda;
-    const Eigen::MatrixXd dual = kernel.llt().solve(targets.transpose().cast<double>());
-    return (features.cast<double>() * dual).transpose().cast<float>();
-  }
-  Eigen::MatrixXd gram = (features * features.transpose()).cast<double>();
-  gram.diagonal().array() += lambda;
-  const Eigen::MatrixXd rhs = (features * targets.transpose()).cast<double>();
-  return gram.llt().solve(rhs).transpose().cast<float>();
 }
 
 }  // namespace
@@ -154,22 +115,24 @@ Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& re
   return points;
 }
 
-Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
-                              const Eigen::Matrix2Xd& points) {
-  if (refiner.empty()) return points;
+RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image,
+                             const Eigen::Matrix2Xd& points, bool check) {
+  RefinedPoints out{points};
+  if (refiner.empty()) return out;
   const std::vector<int>& landmarks = refiner.landmarks;
   Eigen::Matrix2Xd start(2, static_cast<Eigen::Index>(landmarks.size()));
   for (std::size_t i = 0; i < landmarks.size(); ++i) {
     if (landmarks[i] >= points.cols()) throw Error("refine: fewer points than the refiner's");
     start.col(static_cast<Eigen::Index>(i)) = points.col(landmarks[i]);
   }
-  if (!start.allFinite()) return points;
+  if (!start.allFinite()) return out;
   const DescentRegion region = descentRegion(image, start, refiner.leftEye, refiner.rightEye);
-  const Eigen::Matrix2Xd refined =
-      region.toImage(refineInRegion(refiner, region.grey, region.toRegion(start)));
-  Eigen::Matrix2Xd out = points;
+  const Eigen::Matrix2Xd refinedInRegion =
+      refineInRegion(refiner, region.grey, region.toRegion(start));
+  if (check) out.rightProbability = checkInRegion(refiner, region.grey, refinedInRegion);
+  const Eigen::Matrix2Xd refined = region.toImage(refinedInRegion);
   for (std::size_t i = 0; i < landmarks.size(); ++i)
-    out.col(landmarks[i]) = refined.col(static_cast<Eigen::Index>(i));
+    out.points.col(landmarks[i]) = refined.col(static_cast<Eigen::Index>(i));
   return out;
 }
 
@@ -196,7 +159,7 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
     const Eigen::Matrix2Xd& truth = photos[p].truth;
     const double eyeDistance = (truth.col(leftEye) - truth.col(rightEye)).norm();
     for (int k = 0; k < perPhoto; ++k)
-      starts[p * perPhoto + k] = perturbedStart(truth, eyeDistance, settings, random);
+      starts[p * perPhoto + k] = perturbedPoints(truth, eyeDistance, settings.start, random);
   }
   std::vector<Similarity2> frames(static_cast<std::size_t>(m));
   for (double window : settings.windows) {

@@ -9,11 +9,13 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
 #include "core/common/progress.hpp"
 #include "core/model/descent_refiner.hpp"
+#include "core/refine/training_starts.hpp"
 
 namespace clm3d {
 
@@ -35,11 +37,22 @@ inline constexpr double kDescentEyeDistance = 40.0;
 DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,
                             int rightEye);
 
-// Every scheme landmark (2 x L, image pixels) with the refiner's points moved by every stage;
-// `image` as descentRegion takes it. The points are returned unchanged when the refiner is empty
-// or one of its points is not finite.
-Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
-                              const Eigen::Matrix2Xd& points);
+struct RefinedPoints {
+  Eigen::Matrix2Xd points;  // every scheme landmark (2 x L, image pixels)
+  // The refiner's check (core/refine/descent_check.hpp): the probability that the refined points
+  // are right. NaN when the refiner has no check, was not asked to check or did not refine.
+  double rightProbability = std::numeric_limits<double>::quiet_NaN();
+};
+
+// Every scheme landmark of `points` with the refiner's points moved by every stage and, when
+// `check` is set and the refiner has one, checked; `image` as descentRegion takes it. The points
+// are returned unchanged when the refiner is empty or one of its points is not finite.
+RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image,
+                             const Eigen::Matrix2Xd& points, bool check = true);
+inline Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
+                                     const Eigen::Matrix2Xd& points) {
+  return refineAndCheck(refiner, image, points, false).points;
+}
 // The refiner's points only (2 x N, region pixels) after every stage, from `start`.
 Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                                 const Eigen::Matrix2Xd& start);
@@ -54,13 +67,9 @@ struct DescentTrainSettings {
   std::vector<double> windows{0.8, 0.6, 0.45, 0.35};  // one stage per window
   // Ridge regularisation, as a share of the features' mean variance.
   double ridge = 0.05;
-  // Starts per photo: the true points moved by a random similarity (shift, scale, roll: the
-  // search's typical misplacement) and by a small independent offset per point.
+  // Starts per photo: the true points moved as a search typically misplaces them.
   int startsPerPhoto = 10;
-  double shift = 0.08;   // SD of the start's shift, eye distances
-  double scale = 0.06;   // SD of the log of its scale
-  double roll = 0.1;     // SD of its roll, radians
-  double jitter = 0.03;  // SD of each point's own offset, eye distances
+  StartPerturbation start;
   std::uint64_t seed = 1;
   int threads = 0;
 };

@@ -5,7 +5,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/common/error.hpp"
 #include "core/common/parallel_for.hpp"
+#include "core/refine/descent_check.hpp"
 #include "core/refine/descent_refinement.hpp"
 
 namespace clm3d {
@@ -24,6 +26,8 @@ constexpr double kWindowGrowth = 1.3;
 // The regressions' ridge: 0.2 against 0.05 took the same held-out photos from 0.0425 to 0.0415
 // (5-point start), 0.0526 to 0.0528 (detector).
 constexpr double kRidge = 0.2;
+// The fewest faces (photos and their mirror images) the refiner's check is learnt from.
+constexpr std::size_t kCheckMinFaces = 40;
 
 }  // namespace
 
@@ -99,6 +103,20 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   train.seed = settings.seed;
   train.threads = settings.threads;
   DescentRefiner refiner = trainDescentRefiner(faces, landmarks, leftEye, rightEye, train, cancel);
+  if (progress) progress(0.8, "refiner check");
+
+  DescentCheckSettings checkSettings;
+  checkSettings.seed = settings.seed;
+  checkSettings.threads = settings.threads;
+  // Too few photos to learn a check and calibrate it on others: the refiner goes without one, and
+  // fits keep the search's confidence.
+  if (faces.size() >= kCheckMinFaces) {
+    try {
+      refiner.check = trainDescentCheck(faces, refiner, checkSettings, cancel);
+    } catch (const InputError&) {
+      // Every refined start right (or every one wrong): nothing to tell apart; no check.
+    }
+  }
   if (progress) progress(1.0, "refiner");
   return refiner;
 }

@@ -127,7 +127,8 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   std::string newer = good;
   writeU32(newer, 8, 7);
   EXPECT_EQ(parseError(newer),
-            "m.clm3d: format version 7 is newer than this clm3d (4); update clm3d");
+            "m.clm3d: format version 7 is newer than this clm3d (" +
+                std::to_string(kModelFormatVersion) + "); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
   EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
@@ -366,6 +367,55 @@ TEST(ModelFile, PointRefinerRoundTrips) {
                                    "../fuzz/corpus/fuzz_model_file/tiny-experts-v3.clm3d";
   ASSERT_EQ(modelFileVersion(v3), 3u);
   EXPECT_TRUE(loadModel(v3).refiner.empty());
+}
+
+// Version 5: the refiner's check is stored after its stages and read back exactly; a refiner
+// without one writes no "check" key, and a version 4 file (the fuzz corpus's
+// tiny-refiner-v4.clm3d) loads with a refiner and no check.
+TEST(ModelFile, RefinerCheckRoundTrips) {
+  ClmModel model = tinyModelWithRefiner();
+  EXPECT_EQ(headerOf(serializeModel(model)).find("\"check\""), std::string::npos);
+  DescentCheck& check = model.refiner.check;
+  const Eigen::Index d = 3 * kDescentFeaturesPerPoint;
+  check.window = 0.7;
+  check.featureMean = Eigen::VectorXf::LinSpaced(d, -0.1f, 0.1f);
+  check.weights = Eigen::VectorXf::LinSpaced(d, 0.2f, -0.3f);
+  check.bias = -0.25;
+  check.slope = 3.5;
+  check.offset = 0.125;
+  const std::string bytes = serializeModel(model);
+  // The fuzz target's version 5 seed (tests/fuzz/corpus/fuzz_model_file/tiny-check-v5.clm3d).
+  if (const char* corpus = std::getenv("CLM3D_WRITE_CHECK_MODEL_SEED")) saveModel(model, corpus);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  const DescentCheck& back = loaded.refiner.check;
+  EXPECT_EQ(back.window, 0.7);
+  EXPECT_EQ(back.featureMean, check.featureMean);
+  EXPECT_EQ(back.weights, check.weights);
+  EXPECT_EQ(back.bias, -0.25);
+  EXPECT_EQ(back.slope, 3.5);
+  EXPECT_EQ(back.offset, 0.125);
+
+  // An unknown key in the check, a window out of range.
+  const std::string header = headerOf(bytes);
+  for (const auto& [from, to, expected] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"\"slope\":", "\"slopes\":", "refiner.check.slope"},
+           {"\"window\":0.7", "\"window\":7.0", "check.window"}}) {
+    std::string edited = header;
+    const auto at = edited.find(from, edited.find("\"check\""));
+    ASSERT_NE(at, std::string::npos) << from;
+    edited.replace(at, from.size(), to);
+    EXPECT_NE(parseError(withHeader(bytes, edited)).find(expected), std::string::npos)
+        << to << ": " << parseError(withHeader(bytes, edited));
+  }
+
+  const std::filesystem::path v4 = std::filesystem::path(CLM3D_TEST_FIXTURES) /
+                                   "../fuzz/corpus/fuzz_model_file/tiny-refiner-v4.clm3d";
+  ASSERT_EQ(modelFileVersion(v4), 4u);
+  const ClmModel old = loadModel(v4);
+  EXPECT_FALSE(old.refiner.empty());
+  EXPECT_TRUE(old.refiner.check.empty());
 }
 
 // A file of format version 2 (one linear filter, gain and bias per expert: the fuzz corpus's

@@ -1,17 +1,19 @@
 // Tests of the point refiner (core/refine): on drawn "faces" (dark discs of different sizes at
 // known points over a noisy background, each face moved, scaled and turned at random), a cascade
-// trained on some faces brings perturbed starts on other faces much closer to the truth; an empty
-// refiner or a start that is not finite leaves the points
-// as they are; bad images are refused.
+// trained on some faces brings perturbed starts on other faces much closer to the truth, and its
+// check tells refined points that are right from ones a far start left wrong; an empty refiner or
+// a start that is not finite leaves the points as they are; bad images are refused.
 #include "core/refine/descent_refinement.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
 #include "core/common/error.hpp"
+#include "core/refine/descent_check.hpp"
 
 namespace clm3d {
 namespace {
@@ -118,6 +120,71 @@ TEST(DescentRefinement, BringsStartsOnUnseenFacesCloserToTheTruth) {
   }
   EXPECT_GT(before, 0.08);
   EXPECT_LT(after, 0.25 * before) << "before " << before << ", after " << after;
+}
+
+// The scheme's points (10) with the refiner's six at `points`, the others at (7, 7).
+Eigen::Matrix2Xd schemePoints(const Eigen::Matrix2Xd& points) {
+  Eigen::Matrix2Xd all = Eigen::Matrix2Xd::Constant(2, 10, 7.0);
+  for (std::size_t i = 0; i < kLandmarks.size(); ++i) all.col(kLandmarks[i]) = points.col(i);
+  return all;
+}
+
+Eigen::Matrix2Xd refinersPoints(const Eigen::Matrix2Xd& all) {
+  Eigen::Matrix2Xd points(2, static_cast<Eigen::Index>(kLandmarks.size()));
+  for (std::size_t i = 0; i < kLandmarks.size(); ++i) points.col(i) = all.col(kLandmarks[i]);
+  return points;
+}
+
+TEST(DescentCheck, TellsRightRefinedPointsFromWrongOnes) {
+  DescentRefiner refiner = trainedRefiner();
+  DescentCheckSettings settings;
+  settings.threads = 2;
+  refiner.check = trainDescentCheck(drawnPhotos(80, 11), refiner, settings);
+  EXPECT_NO_THROW(refiner.validate(10));
+  // Unseen faces from near starts (as a search leaves them) and far ones (the face missed by most
+  // of an eye distance): each refined, then judged right or wrong by its own error.
+  std::mt19937_64 random(123);
+  std::vector<double> right, wrong;
+  for (int f = 0; f < 40; ++f) {
+    const DrawnFace face = drawFace(random);
+    const double eyes = (face.points.col(0) - face.points.col(1)).norm();
+    for (const bool far : {false, true}) {
+      Eigen::Matrix2Xd start = offStart(face.points, random);
+      if (far) start.colwise() += Eigen::Vector2d(0.6, 0.5) * eyes * (f % 2 == 0 ? 1.0 : -1.0);
+      const RefinedPoints refined = refineAndCheck(refiner, face.image, schemePoints(start));
+      ASSERT_TRUE(std::isfinite(refined.rightProbability));
+      EXPECT_GE(refined.rightProbability, 0.0);
+      EXPECT_LE(refined.rightProbability, 1.0);
+      const double error = meanError(refinersPoints(refined.points), face.points);
+      if (error < 0.15) right.push_back(refined.rightProbability);
+      if (error > 0.3) wrong.push_back(refined.rightProbability);
+      EXPECT_EQ(refined.points,
+                refineAndCheck(refiner, face.image, schemePoints(start), false).points);
+    }
+  }
+  ASSERT_GE(right.size(), 20u);
+  ASSERT_GE(wrong.size(), 20u);
+  // The share of (right, wrong) pairs the check orders correctly: the ROC's area.
+  double ordered = 0.0;
+  for (double r : right) {
+    for (double w : wrong) ordered += r > w ? 1.0 : r == w ? 0.5 : 0.0;
+  }
+  const double auc = ordered / static_cast<double>(right.size() * wrong.size());
+  EXPECT_GT(auc, 0.95) << right.size() << " right, " << wrong.size() << " wrong";
+  const auto above = [](const std::vector<double>& p) {
+    return std::count_if(p.begin(), p.end(), [](double x) { return x > 0.5; });
+  };
+  EXPECT_GE(above(right), static_cast<long>(0.9 * right.size()));
+  EXPECT_LE(above(wrong), static_cast<long>(0.1 * wrong.size()));
+
+  // Without a check: no probability.
+  EXPECT_TRUE(std::isnan(
+      refineAndCheck(trainedRefiner(), drawFace(random).image, schemePoints(canonicalFace() * 50.0))
+          .rightProbability));
+  DescentRefiner broken = refiner;
+  broken.check.weights.resize(5);
+  EXPECT_THROW(broken.validate(10), Error);
+  EXPECT_THROW(trainDescentCheck(drawnPhotos(4, 3), refiner, settings), InputError);
 }
 
 TEST(DescentRefinement, TrainingDoesNotDependOnTheThreadCount) {

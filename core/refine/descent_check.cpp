@@ -1,0 +1,141 @@
+#include "core/refine/descent_check.hpp"
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <utility>
+
+#include "core/common/error.hpp"
+#include "core/common/parallel_for.hpp"
+#include "core/geometry/similarity2.hpp"
+#include "core/refine/descent_features.hpp"
+#include "core/refine/ridge_regression.hpp"
+
+namespace clm3d {
+
+namespace {
+
+Eigen::VectorXf featuresAt(const DescentRefiner& refiner, const cv::Mat& grey,
+                           const Eigen::Matrix2Xd& points, double window) {
+  const Similarity2 frame = alignSimilarity2(refiner.meanShape, points);
+  return descentFeatures(grey, frame, frame.inverse(points), window);
+}
+
+double logistic(double x) {
+  return 1.0 / (1.0 + std::exp(-x));
+}
+
+// The logistic curve p = logistic(slope * score + offset) of most likelihood for the labels
+// (Newton's method, with a small ridge on the slope so that separable scores stay finite).
+std::pair<double, double> fitLogistic(const std::vector<double>& scores,
+                                      const std::vector<bool>& right) {
+  double slope = 1.0, offset = 0.0;
+  constexpr double kSlopeRidge = 1e-3;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    double g0 = kSlopeRidge * slope, g1 = 0.0;
+    double h00 = kSlopeRidge, h01 = 0.0, h11 = 1e-9;
+    for (std::size_t i = 0; i < scores.size(); ++i) {
+      const double p = logistic(slope * scores[i] + offset);
+      const double e = p - (right[i] ? 1.0 : 0.0);
+      const double w = p * (1.0 - p);
+      g0 += e * scores[i];
+      g1 += e;
+      h00 += w * scores[i] * scores[i];
+      h01 += w * scores[i];
+      h11 += w;
+    }
+    const double det = h00 * h11 - h01 * h01;
+    if (!(det > 0.0)) break;
+    const double d0 = (h11 * g0 - h01 * g1) / det;
+    const double d1 = (h00 * g1 - h01 * g0) / det;
+    slope -= d0;
+    offset -= d1;
+    if (std::abs(d0) + std::abs(d1) < 1e-9) break;
+  }
+  return {slope, offset};
+}
+
+}  // namespace
+
+double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
+                     const Eigen::Matrix2Xd& points) {
+  const DescentCheck& check = refiner.check;
+  if (check.empty() || !points.allFinite()) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::VectorXf features = featuresAt(refiner, regionGrey, points, check.window);
+  const double score = check.weights.dot(features - check.featureMean) + check.bias;
+  return logistic(check.slope * score + check.offset);
+}
+
+DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
+                               const DescentRefiner& refiner, const DescentCheckSettings& settings,
+                               const CancelToken* cancel) {
+  if (refiner.empty()) throw InputError("refiner check: the refiner has no stages");
+  const int every = std::max(2, settings.calibrationEvery);
+  if (photos.size() < 2 * static_cast<std::size_t>(every))
+    throw InputError("refiner check: too few photos to learn and calibrate from");
+  if (settings.startsPerPhoto < 2) throw InputError("refiner check: need 2 starts per photo");
+  const int perPhoto = settings.startsPerPhoto;
+  const int m = static_cast<int>(photos.size()) * perPhoto;
+  const Eigen::Index d =
+      static_cast<Eigen::Index>(refiner.landmarks.size()) * kDescentFeaturesPerPoint;
+  Eigen::MatrixXf features(d, m);
+  std::vector<bool> right(static_cast<std::size_t>(m));
+  parallelFor(
+      static_cast<int>(photos.size()), settings.threads,
+      [&](int p) {
+        const DescentPhoto& photo = photos[static_cast<std::size_t>(p)];
+        const Eigen::Matrix2Xd& truth = photo.truth;
+        const double eyeDistance =
+            (truth.col(refiner.leftEye) - truth.col(refiner.rightEye)).norm();
+        std::mt19937_64 random(settings.seed * 7919u + static_cast<std::uint64_t>(p));
+        for (int k = 0; k < perPhoto; ++k) {
+          const StartPerturbation& how = k % 2 == 0 ? settings.nearStart : settings.farStart;
+          const Eigen::Matrix2Xd start = perturbedPoints(truth, eyeDistance, how, random);
+          const Eigen::Matrix2Xd refined = refineInRegion(refiner, photo.region.grey, start);
+          const int s = p * perPhoto + k;
+          features.col(s) = featuresAt(refiner, photo.region.grey, refined, settings.window);
+          right[static_cast<std::size_t>(s)] =
+              meanPointError(refined, truth, eyeDistance) <= settings.wrongAbove;
+        }
+      },
+      cancel);
+
+  // Learn on most pairs of faces, calibrate on the rest.
+  const auto calibrates = [&](int s) { return (s / perPhoto / 2) % every == every - 1; };
+  std::vector<int> learn, calibrate;
+  for (int s = 0; s < m; ++s) (calibrates(s) ? calibrate : learn).push_back(s);
+  const auto hasBoth = [&](const std::vector<int>& samples) {
+    int count = 0;
+    for (int s : samples) count += right[static_cast<std::size_t>(s)];
+    return count > 0 && count < static_cast<int>(samples.size());
+  };
+  if (!hasBoth(learn) || !hasBoth(calibrate))
+    throw InputError("refiner check: the refined starts were all right or all wrong");
+
+  DescentCheck check;
+  check.window = settings.window;
+  Eigen::MatrixXf learnFeatures(d, static_cast<Eigen::Index>(learn.size()));
+  Eigen::MatrixXf targets(1, static_cast<Eigen::Index>(learn.size()));
+  for (std::size_t i = 0; i < learn.size(); ++i) {
+    learnFeatures.col(static_cast<Eigen::Index>(i)) = features.col(learn[i]);
+    targets(0, static_cast<Eigen::Index>(i)) =
+        right[static_cast<std::size_t>(learn[i])] ? 1.f : -1.f;
+  }
+  check.featureMean = learnFeatures.rowwise().mean();
+  learnFeatures.colwise() -= check.featureMean;
+  const float meanTarget = targets.mean();
+  targets.array() -= meanTarget;
+  check.weights = ridgeRegression(learnFeatures, targets, settings.ridge).row(0).transpose();
+  check.bias = meanTarget;
+
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int s : calibrate) {
+    scores.push_back(check.weights.dot(features.col(s) - check.featureMean) + check.bias);
+    labels.push_back(right[static_cast<std::size_t>(s)]);
+  }
+  std::tie(check.slope, check.offset) = fitLogistic(scores, labels);
+  return check;
+}
+
+}  // namespace clm3d
