@@ -72,7 +72,10 @@ void runInfo(const std::filesystem::path& path) {
     std::cout << "point refiner: none\n";
   } else {
     std::cout << "point refiner: " << model.refiner.stages.size() << " stages over "
-              << model.refiner.landmarks.size() << " landmarks\n";
+              << model.refiner.landmarks.size() << " landmarks, "
+              << (model.refiner.check.empty() ? "no check (fits keep the search's confidence)"
+                                              : "checked (a fit's confidence is the check's)")
+              << "\n";
   }
   const ModelProvenance& p = model.provenance;
   std::cout << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"

@@ -19,13 +19,18 @@ FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState star
 
 FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                            const FitState& start, const StartSearchSettings& settings,
-                           int* searches) {
+                           int* searches, const FitFinisher& finish) {
+  const auto search = [&](const FitState& from) {
+    FitResult fit = fitter.fit(image, from);
+    if (finish) finish(fit);
+    return fit;
+  };
   std::vector<double> sizes{1.0};
   for (const double size : settings.sizes) {
     if (size != 1.0) sizes.push_back(size);
   }
   const int steps = std::max(0, settings.steps);
-  FitResult best = fitter.fit(image, start);
+  FitResult best = search(start);
   int count = 1;
   for (int dy = -steps; dy <= steps; ++dy) {
     for (int dx = -steps; dx <= steps; ++dx) {
@@ -34,7 +39,7 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
         FitState moved =
             shiftedStart(model, fitter, start, Eigen::Vector2d(dx, dy) * settings.shift);
         moved.pose.scale *= size;
-        FitResult fit = fitter.fit(image, moved);
+        FitResult fit = search(moved);
         ++count;
         if (fit.confidence > best.confidence) best = std::move(fit);
       }
@@ -43,7 +48,7 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
   if (count > 1) {
     // The fitter keeps the last search's templates (the overlay draws them): search once more from
     // the best result, and keep that unless it is worse.
-    FitResult again = fitter.fit(image, best.state);
+    FitResult again = search(best.state);
     ++count;
     if (again.confidence >= best.confidence) best = std::move(again);
   }

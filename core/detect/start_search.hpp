@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <opencv2/core/mat.hpp>
 
 #include "core/fit/fitter.hpp"
@@ -28,11 +29,16 @@ struct StartSearchSettings {
 FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState start,
                       const Eigen::Vector2d& shareOfEyes);
 
-// Searches `image` from `start` and from every start of the grid, and returns the fit with the
-// highest confidence (the first on ties, so steps 0 with no sizes is fitter.fit(image, start)).
-// `searches`, when given, receives the number of searches made.
+// What is done to each search's fit before fits are compared (the point refiner's refineFit: its
+// check's probability is then the confidence compared). Empty: nothing.
+using FitFinisher = std::function<void(FitResult&)>;
+
+// Searches `image` from `start` and from every start of the grid, finishes every fit with
+// `finish`, and returns the one with the highest confidence (the first on ties, so steps 0 with no
+// sizes is fitter.fit(image, start) finished). `searches`, when given, receives the number of
+// searches made.
 FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                            const FitState& start, const StartSearchSettings& settings,
-                           int* searches = nullptr);
+                           int* searches = nullptr, const FitFinisher& finish = {});
 
 }  // namespace clm3d

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <opencv2/core/mat.hpp>
 #include <string>
@@ -42,12 +44,21 @@ struct FitResult {
   // Template optimisers: mean NCC at the finest scale searched, in [-1, 1]. rlms: the experts'
   // mean response at the final points (finest scale), in (0, 1).
   double confidence = 0.0;
+  // When the model's point refiner has refined and checked the points
+  // (core/refine/refined_fit.hpp), `confidence` is the check's probability that they are right and
+  // this is the search's own confidence above; NaN otherwise.
+  double searchConfidence = std::numeric_limits<double>::quiet_NaN();
   // The same measure per scheme landmark (the NCC of its patch, or its expert's response); NaN
   // for the landmarks the final view does not model. Their mean over the modelled ones is
   // `confidence`.
   std::vector<double> landmarkConfidence;
   bool converged = false;  // the finest scale met the tolerance within maxIterations
   int iterations = 0;      // over all scales
+
+  // The search's own confidence, checked or not.
+  double searchScore() const {
+    return std::isnan(searchConfidence) ? confidence : searchConfidence;
+  }
 };
 
 class Fitter {

@@ -19,7 +19,7 @@
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/detect/start_search.hpp"
-#include "core/refine/descent_refinement.hpp"
+#include "core/refine/refined_fit.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -144,10 +144,18 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
           mixKey(settings_.startOffsetSeed, std::hash<std::string>{}(image.stem().string())));
     }
     const auto begin = std::chrono::steady_clock::now();
-    FitResult fit = startPoints.empty() ? fitFromBestStart(fitter, *model_, lastImage_, start,
-                                                           settings_.startSearch)
-                                        : fitter.fit(lastImage_, start);
-    if (settings_.refine) fit.points = refinePoints(model_->refiner, lastImage_, fit.points);
+    FitFinisher finish;
+    if (settings_.refine) {
+      finish = [this](FitResult& fit) { refineFit(model_->refiner, lastImage_, fit); };
+    }
+    FitResult fit;
+    if (startPoints.empty()) {
+      fit = fitFromBestStart(fitter, *model_, lastImage_, start, settings_.startSearch, nullptr,
+                             finish);
+    } else {
+      fit = fitter.fit(lastImage_, start);
+      if (finish) finish(fit);
+    }
     outcome.fitMilliseconds = millisecondsSince(begin);
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];
@@ -180,17 +188,17 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
 
 std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes) {
   std::ostringstream out;
-  out << "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,iterations,converged,"
-         "error\n";
+  out << "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
+         "iterations,converged,error\n";
   for (const ImageFitOutcome& o : outcomes) {
     out << csvCell(o.image.string()) << ',' << toString(o.status) << ','
         << fixedCell(o.fitMilliseconds, 3) << ',' << fixedCell(o.detectMilliseconds, 3) << ',';
     if (o.fit) {
-      out << fixedCell(o.fit->confidence, 6) << ',' << fixedCell(o.viewPitchDeg, 1) << ','
-          << fixedCell(o.viewYawDeg, 1) << ',' << o.fit->iterations << ','
-          << (o.fit->converged ? 1 : 0) << ',';
+      out << fixedCell(o.fit->confidence, 6) << ',' << fixedCell(o.fit->searchConfidence, 6) << ','
+          << fixedCell(o.viewPitchDeg, 1) << ',' << fixedCell(o.viewYawDeg, 1) << ','
+          << o.fit->iterations << ',' << (o.fit->converged ? 1 : 0) << ',';
     } else {
-      out << ",,,,,";
+      out << ",,,,,,";
     }
     out << csvCell(o.message) << '\n';
   }

@@ -133,10 +133,11 @@ ImageFitOutcome fitBatchImage(ImageFitter& fitter, const std::filesystem::path& 
                               const std::filesystem::path& initDir,
                               const std::filesystem::path& output);
 
-// The summary table: a header "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,
-// iterations,converged,error" and one row per outcome. Milliseconds with 3 decimals, the
-// confidence with 6, view angles in degrees; empty cells where there is no value. A cell holding a
-// comma, quote or line break is quoted as RFC 4180 says.
+// The summary table: a header "image,status,fit_ms,detect_ms,confidence,search_confidence,
+// view_pitch,view_yaw,iterations,converged,error" and one row per outcome (search_confidence is
+// FitResult::searchConfidence: set when the point refiner's check gave the confidence).
+// Milliseconds with 3 decimals, the confidences with 6, view angles in degrees; empty cells where
+// there is no value. A cell holding a comma, quote or line break is quoted as RFC 4180 says.
 std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes);
 
 // Called after each image with its 0-based index in the job.

@@ -8,7 +8,7 @@
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
-#include "core/refine/descent_refinement.hpp"
+#include "core/refine/refined_fit.hpp"
 #include "core/video/video_reader.hpp"
 
 namespace clm3d {
@@ -110,8 +110,9 @@ void Tracker::searchNeighbouringViews(TrackStep& step, Attempt& attempt) {
     start.pose.yaw =
         0.5 * (from.pose.yaw + model_->views[static_cast<std::size_t>(v)].yawDeg * kDeg);
     attempt(start, v);
-    const bool better = step.fit && step.failure == TrackFailure::None &&
-                        step.fit->confidence > best.fit->confidence + settings_.viewSearchMargin;
+    const bool better =
+        step.fit && step.failure == TrackFailure::None &&
+        step.fit->searchScore() > best.fit->searchScore() + settings_.viewSearchMargin;
     if (better) {
       best = step;
       lastIsBest = true;
@@ -122,7 +123,7 @@ void Tracker::searchNeighbouringViews(TrackStep& step, Attempt& attempt) {
   if (!lastIsBest) {
     // The overlay draws the fitter's last templates: search once more from the kept result.
     attempt(best.fit->state, best.fit->view);
-    if (!step.fit || step.fit->confidence < best.fit->confidence) step = best;
+    if (!step.fit || step.fit->searchScore() < best.fit->searchScore()) step = best;
   }
 }
 
@@ -166,7 +167,10 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   if (std::sqrt(mahalanobis) > settings_.maxShapeRms * std::sqrt(std::max(1, shape.modeCount()))) {
     return TrackFailure::ImplausibleShape;
   }
-  if (fit.confidence < minConfidence()) return TrackFailure::LowConfidence;
+  // A fit the point refiner checked is judged on the check's probability, else on the search's.
+  const double least =
+      std::isnan(fit.searchConfidence) ? minConfidence() : settings_.minCheckProbability;
+  if (fit.confidence < least) return TrackFailure::LowConfidence;
   return TrackFailure::None;
 }
 
@@ -176,13 +180,21 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   step.row.timestamp = timestamp;
   step.row.points = Eigen::Matrix2Xd::Constant(2, model_->shape.pointCount(),
                                                std::numeric_limits<double>::quiet_NaN());
-  double searchMs = 0.0;  // every search of the frame
+  double searchMs = 0.0;  // every search of the frame, refinement included
+  FitFinisher finish;
+  if (settings_.refine && !model_->refiner.empty()) {
+    finish = [&](FitResult& fit) { refineFit(model_->refiner, frame, fit); };
+  }
   const auto attempt = [&](const FitState& start, int view,
                            const StartSearchSettings* search = nullptr) {
     const auto begin = std::chrono::steady_clock::now();
     try {
-      step.fit = search != nullptr ? fitFromBestStart(fitter_, *model_, frame, start, *search)
-                                   : fitter_.fit(frame, start, view);
+      if (search != nullptr) {
+        step.fit = fitFromBestStart(fitter_, *model_, frame, start, *search, nullptr, finish);
+      } else {
+        step.fit = fitter_.fit(frame, start, view);
+        if (finish) finish(*step.fit);
+      }
       step.failure = judge(*step.fit);
     } catch (const InputError&) {
       // The start put the face outside the image: the track is lost, not the input broken.
@@ -199,7 +211,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     // A prediction that overshoots (the head stopped or turned back) gets a second try from
     // where the face last was, before falling back to the detector.
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
-    if (step.fit && step.fit->confidence < viewSearchConfidence()) {
+    if (step.fit && step.fit->searchScore() < viewSearchConfidence()) {
       searchNeighbouringViews(step, attempt);
     }
   }
@@ -232,13 +244,6 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.view = step.fit->view;
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;
-    if (step.row.success && settings_.refine && !model_->refiner.empty()) {
-      const auto begin = std::chrono::steady_clock::now();
-      step.row.points = refinePoints(model_->refiner, frame, step.row.points);
-      step.fitMilliseconds +=
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
-              .count();
-    }
     step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
     step.row.landmarkConfidence = step.fit->landmarkConfidence;
   }

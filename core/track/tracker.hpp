@@ -78,9 +78,13 @@ struct TrackerSettings {
   // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
   SmoothingSettings smoothing;
   // Apply the model's point refiner (ClmModel::refiner, learnt from annotated photos; models
-  // without photos have none) to a tracked frame's fitted points before smoothing. The next frame
-  // still starts from the fitted 3D state.
+  // without photos have none) to every search's points (core/refine/refined_fit.hpp). The next
+  // frame still starts from the fitted 3D state.
   bool refine = true;
+  // With a refiner that has a check (models trained with photos since format 5), a frame fails
+  // when the check's probability that its refined points are right is below this; the search's
+  // confidence thresholds above are then not applied.
+  double minCheckProbability = 0.5;
 };
 
 // Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest

@@ -153,6 +153,12 @@ std::vector<TrackerOption> buildOptions() {
                          "the same for rlms: the patch experts' mean response (0..1) below which "
                          "a frame counts as failed",
                          [](S& s) -> double& { return s.minExpertConfidence; }));
+  options.push_back(real("min-check-probability", "Lowest check probability", "Failure", track, 0.0,
+                         1.0, 2,
+                         "models whose point refiner has a check (trained with photos): the "
+                         "check's probability that the refined points are right below which a "
+                         "frame counts as failed (the two thresholds above are then not used)",
+                         [](S& s) -> double& { return s.minCheckProbability; }));
   options.push_back(real("max-shape-rms", "Largest shape RMS", "Failure", track, 0.1, 10.0, 2,
                          "root mean square of the shape parameters in standard deviations beyond "
                          "which a fit counts as failed (implausible shape)",

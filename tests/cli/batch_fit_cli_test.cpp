@@ -87,8 +87,8 @@ TEST(BatchFitCli, FolderWithAnUnreadableImageGivesAnErrorRowAndExitsOne) {
   const auto rows = lines(test::readFile(out / "summary.csv"));
   ASSERT_EQ(rows.size(), 5U) << test::readFile(out / "summary.csv");
   EXPECT_EQ(rows[0],
-            "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,iterations,converged,"
-            "error");
+            "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
+            "iterations,converged,error");
   EXPECT_TRUE(test::contains(rows[1], "a-turned.png,ok,")) << rows[1];
   EXPECT_TRUE(test::contains(rows[2], "b-frontal.jpg,ok,")) << rows[2];
   EXPECT_TRUE(test::contains(rows[3], "c-blank.png,no-face,")) << rows[3];

@@ -69,10 +69,10 @@ TEST(BatchSummary, EmptyCellsForMissingValuesAndQuotedMessages) {
   bad.status = ImageFitStatus::Error;
   bad.message = "b.jpg: cannot be read, or so";
   EXPECT_EQ(formatBatchFitSummary({ok, bad}),
-            "image,status,fit_ms,detect_ms,confidence,view_pitch,view_yaw,iterations,converged,"
-            "error\n"
-            "a.png,ok,3.142,,0.500000,0.0,-30.0,7,1,\n"
-            "\"b, \"\"odd\"\".jpg\",error,,,,,,,,\"b.jpg: cannot be read, or so\"\n");
+            "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
+            "iterations,converged,error\n"
+            "a.png,ok,3.142,,0.500000,,0.0,-30.0,7,1,\n"
+            "\"b, \"\"odd\"\".jpg\",error,,,,,,,,,\"b.jpg: cannot be read, or so\"\n");
 }
 
 }  // namespace

@@ -1,10 +1,14 @@
 // The point refiner in the fit of still images: trained by the trainer's photo path
 // (trainPhotoRefiner) from renders of the fixture's procedural heads saved as annotated photos, it
 // refines every landmark they all mark, brings starts moved off a held-out head closer to its
-// truth, and ImageFitter and the Tracker apply it to the search's points unless told not to (the
-// tracker to a tracked frame's row only, not to the state the next frame starts from).
+// truth, and ImageFitter and the Tracker apply it to the search's points unless told not to (not
+// to the state the next frame starts from). Its check, learnt from the same photos, gives a fit's
+// confidence: high on the held-out head, low on points moved off it, and the tracker fails a
+// frame that has no face on it.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <opencv2/core.hpp>
 #include <random>
 
 #include "core/refine/descent_refinement.hpp"
@@ -46,8 +50,12 @@ struct RefinerFixture {
   RefinerFixture() {
     std::vector<TrainingPhoto> photos;
     for (int head = 0; head < 4; ++head) {
-      for (const auto& [pitch, yaw] :
-           {std::pair{0.0, -8.0}, {5.0, 0.0}, {-5.0, 6.0}, {0.0, 12.0}}) {
+      for (const auto& [pitch, yaw] : {std::pair{0.0, -8.0},
+                                       {5.0, 0.0},
+                                       {-5.0, 6.0},
+                                       {0.0, 12.0},
+                                       {3.0, -3.0},
+                                       {-3.0, -12.0}}) {
         photos.push_back(savePhoto(
             dir.path(), "h" + std::to_string(head) + "-" + std::to_string(static_cast<int>(yaw)),
             makeFitScene(fitTestModel(), pitch, yaw, head)));
@@ -135,6 +143,59 @@ TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   EXPECT_TRUE(refined.fit->state.pose.translation.isApprox(plain.fit->state.pose.translation));
   EXPECT_TRUE(refined.row.points.isApprox(
       refinePoints(model.refiner, scene.image, plain.fit->points), 1e-9));
+}
+
+TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  ASSERT_FALSE(model.refiner.check.empty()) << "48 faces learn a check";
+  const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
+  const test::TempDir dir;
+  writeImage(dir / "face.png", scene.image);
+  LandmarkSet start(25, 2);
+  for (int i = 0; i < 25; ++i) start.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
+  writeLandmarks(dir / "start.pts", start, Scheme::thesis25());
+
+  ImageFitter fitter(model, ImageFitSettings{});
+  const ImageFitOutcome right = fitter.fitFile(dir / "face.png", dir / "start.pts");
+  ASSERT_EQ(right.status, ImageFitStatus::Ok) << right.message;
+  EXPECT_TRUE(std::isfinite(right.fit->searchConfidence));
+  EXPECT_GT(right.fit->confidence, 0.5);
+  EXPECT_LE(right.fit->confidence, 1.0);
+  EXPECT_NEAR(right.fit->confidence,
+              refineAndCheck(model.refiner, scene.image,
+                             ImageFitter(model,
+                                         [] {
+                                           ImageFitSettings s;
+                                           s.refine = false;
+                                           return s;
+                                         }())
+                                 .fitFile(dir / "face.png", dir / "start.pts")
+                                 .fit->points)
+                  .rightProbability,
+              1e-9);
+  // Points moved by most of an eye distance stay wrong after refining, and the check says so.
+  for (const Eigen::Vector2d& share : {Eigen::Vector2d(0.7, 0.4), Eigen::Vector2d(-0.6, -0.6)}) {
+    const Eigen::Matrix2Xd moved = scene.truthPoints.colwise() + share * scene.interOcular;
+    const RefinedPoints refined = refineAndCheck(model.refiner, scene.image, moved);
+    ASSERT_GT(meanPointError(refined.points, scene.truthPoints) / scene.interOcular, 0.2);
+    EXPECT_LT(refined.rightProbability, 0.5) << share.transpose();
+  }
+
+  // The tracker judges a checked fit on the check's probability: a frame without the face fails.
+  TrackerSettings settings;
+  Tracker tracker(model, scene.camera, settings);
+  tracker.setState(scene.truth, -1);
+  const TrackStep tracked = tracker.track(scene.image, 0, 0.0);
+  ASSERT_TRUE(tracked.row.success) << toString(tracked.failure);
+  EXPECT_GT(tracked.row.confidence, 0.5);
+  cv::Mat noise(scene.image.size(), scene.image.type());
+  cv::randu(noise, 0, 255);
+  tracker.setState(scene.truth, -1);
+  const TrackStep lost = tracker.track(noise, 1, 0.04);
+  EXPECT_FALSE(lost.row.success);
+  ASSERT_TRUE(lost.fit.has_value());
+  EXPECT_LT(lost.fit->confidence, settings.minCheckProbability);
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+#include "core/refine/refined_fit.hpp"
+
+#include <cmath>
+
+#include "core/refine/descent_refinement.hpp"
+
+namespace clm3d {
+
+void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit) {
+  if (refiner.empty()) return;
+  RefinedPoints refined = refineAndCheck(refiner, image, fit.points);
+  fit.points = std::move(refined.points);
+  if (std::isfinite(refined.rightProbability)) {
+    fit.searchConfidence = fit.searchScore();
+    fit.confidence = refined.rightProbability;
+  }
+}
+
+}  // namespace clm3d
