@@ -233,8 +233,8 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
     JsonFields settings = report.object("settings");
     settings.allow({"min_face_size", "max_image_side", "cascade_profiles",
                     "cascade_profiles_everywhere", "cascade_dlib_fallback",
-                    "cascade_dlib_agreement", "frontal_yaw_deg", "calibration_target",
-                    "vertical_fov_deg", "with_model"});
+                    "cascade_dlib_agreement", "dlib_threshold", "frontal_yaw_deg",
+                    "calibration_target", "vertical_fov_deg", "with_model"});
     settings.rejectUnknown();
   }
   const JsonValue& detectors = report.array("detectors");
@@ -491,6 +491,7 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
       {"cascade_profiles_everywhere", s.profilesEverywhere},
       {"cascade_dlib_fallback", s.dlibFallback && FaceDetector::available(DetectorKind::DlibHog)},
       {"cascade_dlib_agreement", s.dlibAgreement && FaceDetector::available(DetectorKind::DlibHog)},
+      {"dlib_threshold", s.dlibThreshold},
       {"frontal_yaw_deg", report.settings.frontalYawDeg},
       {"calibration_target",
        report.settings.calibrationTarget == CalibrationTarget::MeanShape ? "mean-shape" : "eyes"},
