@@ -119,6 +119,17 @@ void addDetectCommand(CLI::App& root) {
                  "cascade: run the profile cascade over the whole image even where the frontal "
                  "cascade found faces (default: only around them)")
       ->excludes(noProfiles);
+  command->add_flag("!--no-dlib-fallback", args->settings.detector.dlibFallback,
+                    "cascade: no dlib HOG search where the cascades find no face (default: "
+                    "dlib searches there when the build has it)");
+  command->add_flag("!--no-dlib-agreement", args->settings.detector.dlibAgreement,
+                    "cascade: rank its boxes by score alone (default, when the build has dlib: "
+                    "faces dlib's HOG also finds first, then the largest)");
+  command
+      ->add_option("--dlib-threshold", args->settings.detector.dlibThreshold,
+                   "dlib: added to its detection threshold (negative finds more faces and more "
+                   "false ones)")
+      ->capture_default_str();
   command->add_flag("--calibrate", args->calibrate,
                     "report the box calibration measured on the photos (medians)");
   command

@@ -232,8 +232,9 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
     // Written with the report; only checked here (the calibrations do not depend on them).
     JsonFields settings = report.object("settings");
     settings.allow({"min_face_size", "max_image_side", "cascade_profiles",
-                    "cascade_profiles_everywhere", "frontal_yaw_deg", "calibration_target",
-                    "vertical_fov_deg", "with_model"});
+                    "cascade_profiles_everywhere", "cascade_dlib_fallback",
+                    "cascade_dlib_agreement", "dlib_threshold", "frontal_yaw_deg",
+                    "calibration_target", "vertical_fov_deg", "with_model"});
     settings.rejectUnknown();
   }
   const JsonValue& detectors = report.array("detectors");
@@ -426,7 +427,10 @@ std::string formatDetectorEvaluationText(const DetectorEvaluationReport& report,
       << (!s.profiles            ? "off"
           : s.profilesEverywhere ? "on, everywhere"
                                  : "on, around frontal faces")
-      << '\n';
+      << ", cascade with dlib: fallback "
+      << (s.dlibFallback && FaceDetector::available(DetectorKind::DlibHog) ? "on" : "off")
+      << ", agreement "
+      << (s.dlibAgreement && FaceDetector::available(DetectorKind::DlibHog) ? "on" : "off") << '\n';
   out << "detector | images | found | no face | wrong face | median ms | p90 ms\n";
   out << std::fixed;
   for (const DetectorEvaluation& e : report.detectors) {
@@ -485,6 +489,9 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
       {"max_image_side", s.maxImageSide},
       {"cascade_profiles", s.profiles},
       {"cascade_profiles_everywhere", s.profilesEverywhere},
+      {"cascade_dlib_fallback", s.dlibFallback && FaceDetector::available(DetectorKind::DlibHog)},
+      {"cascade_dlib_agreement", s.dlibAgreement && FaceDetector::available(DetectorKind::DlibHog)},
+      {"dlib_threshold", s.dlibThreshold},
       {"frontal_yaw_deg", report.settings.frontalYawDeg},
       {"calibration_target",
        report.settings.calibrationTarget == CalibrationTarget::MeanShape ? "mean-shape" : "eyes"},

@@ -34,6 +34,7 @@ void DlibHogDetector::detect(const cv::Mat& grey, int minFaceSize, double thresh
     for (int c = 0; c < grey.cols; ++c) image[r][c] = row[c];
   }
   int doublings = 0;
+  // kDlibSmallestUnenlarged = kDlibWindow / 1.25.
   while ((kDlibWindow >> doublings) > minFaceSize * 1.25 && doublings < 2) ++doublings;
   for (int d = 0; d < doublings; ++d) dlib::pyramid_up(image);
   const double shrink = 1.0 / static_cast<double>(1 << doublings);

@@ -12,6 +12,9 @@
 
 namespace clm3d::detail {
 
+// The smallest minFaceSize at which dlib searches the image as it is (not enlarged).
+constexpr int kDlibSmallestUnenlarged = 64;
+
 // Whether this build has dlib.
 bool dlibAvailable();
 

@@ -79,13 +79,14 @@ bool overlapsAny(const FaceBox& box, const std::vector<FaceBox>& others, double 
   return false;
 }
 
-// Greedy suppression ranked by score, frontal boxes' scores multiplied by `frontalWeight`: the
-// profile cascade also fires on faces turned only 15-30 degrees, where a frontal start is the
+// Greedy suppression ranked by score, cascade frontal boxes' scores multiplied by `frontalWeight`:
+// the profile cascade also fires on faces turned only 15-30 degrees, where a frontal start is the
 // better one, so a profile box must clearly out-score an overlapping frontal box to replace it.
 std::vector<FaceBox> rankAndSuppress(std::vector<FaceBox> boxes, double maxIou,
                                      double frontalWeight) {
   const auto rank = [frontalWeight](const FaceBox& b) {
-    return b.profile ? b.score : b.score * frontalWeight;
+    const bool cascadeFrontal = b.detector == DetectorKind::Cascade && !b.profile;
+    return cascadeFrontal ? b.score * frontalWeight : b.score;
   };
   std::stable_sort(boxes.begin(), boxes.end(), [&rank](const FaceBox& a, const FaceBox& b) {
     if (rank(a) != rank(b)) return rank(a) > rank(b);
@@ -143,10 +144,34 @@ std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou)
   return rankAndSuppress(std::move(boxes), maxIou, 1.0);
 }
 
+std::vector<FaceBox> rankByAgreement(const std::vector<FaceBox>& cascade, std::vector<FaceBox> hog,
+                                     double maxIou) {
+  hog = rankAndSuppress(std::move(hog), maxIou, 1.0);
+  const auto matches = [maxIou](const FaceBox& a, const std::vector<FaceBox>& others) {
+    return std::any_of(others.begin(), others.end(),
+                       [&](const FaceBox& b) { return boxIou(a.box, b.box) > maxIou; });
+  };
+  std::vector<std::pair<FaceBox, bool>> all;  // box, confirmed
+  for (const FaceBox& box : cascade) all.emplace_back(box, matches(box, hog));
+  for (const FaceBox& box : hog) {
+    if (!matches(box, cascade)) all.emplace_back(box, false);
+  }
+  std::stable_sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
+    if (a.second != b.second) return a.second;
+    return area(a.first.box) > area(b.first.box);
+  });
+  std::vector<FaceBox> kept;
+  for (const auto& [box, confirmed] : all) {
+    if (!overlapsAny(box, kept, maxIou)) kept.push_back(box);
+  }
+  return kept;
+}
+
 struct FaceDetector::Impl {
   cv::CascadeClassifier frontal;
   cv::CascadeClassifier profile;
-  std::unique_ptr<detail::DlibHogDetector> hog;  // loaded only for DlibHog
+  // Loaded for DlibHog, and for Cascade with dlibFallback or dlibAgreement when the build has dlib.
+  std::unique_ptr<detail::DlibHogDetector> hog;
 
   // Runs `cascade` over `region` of `grey` (its mirror image when `mirror`) for boxes with sides
   // from minSide to maxSide (0: no limit) and appends them in `grey`'s pixels.
@@ -178,6 +203,26 @@ struct FaceDetector::Impl {
       face.detector = DetectorKind::Cascade;
       out.push_back(face);
     }
+  }
+
+  // The cascades' faces, ranked; with dlib, dlib's faces where they find none
+  // (dlibFallback), or their faces ranked by dlib's agreement (dlibAgreement).
+  std::vector<FaceBox> detectCascade(const cv::Mat& grey, const FaceDetectorSettings& settings) {
+    std::vector<FaceBox> boxes;
+    runCascade(frontal, grey, cv::Rect(0, 0, grey.cols, grey.rows), settings.minFaceSize, 0,
+               settings, false, false, boxes);
+    if (settings.profiles) runProfiles(grey, settings, boxes);
+    boxes = rankAndSuppress(std::move(boxes), settings.overlapIou, settings.frontalPreference);
+    if (!hog) return boxes;
+    std::vector<FaceBox> hogBoxes;
+    if (boxes.empty() && settings.dlibFallback) {
+      hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, hogBoxes);
+      return rankAndSuppress(std::move(hogBoxes), settings.overlapIou, 1.0);
+    }
+    if (boxes.empty() || !settings.dlibAgreement) return boxes;
+    hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
+                settings.dlibThreshold, hogBoxes);
+    return rankByAgreement(boxes, std::move(hogBoxes), settings.overlapIou);
   }
 
   // The profile passes (image and mirror) over the whole image, or around each frontal box.
@@ -216,7 +261,10 @@ FaceDetector::FaceDetector(DetectorKind kind, const FaceDetectorSettings& settin
     : kind_(kind), settings_(settings) {
   settings_.validate();
   impl_ = std::make_unique<Impl>();
-  if (kind == DetectorKind::DlibHog) impl_->hog = std::make_unique<detail::DlibHogDetector>();
+  if (kind == DetectorKind::DlibHog ||
+      ((settings_.dlibFallback || settings_.dlibAgreement) && available(DetectorKind::DlibHog))) {
+    impl_->hog = std::make_unique<detail::DlibHogDetector>();
+  }
   if (kind == DetectorKind::Cascade) {
     loadCascade(impl_->frontal, cascadePath(cascadeDir, settings_.frontalCascade));
     if (settings_.profiles) {
@@ -252,14 +300,13 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
     cv::equalizeHist(grey, equalised);
     grey = equalised;
   }
+  if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return {};
   std::vector<FaceBox> boxes;
-  if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return boxes;
   if (kind_ == DetectorKind::Cascade) {
-    impl_->runCascade(impl_->frontal, grey, cv::Rect(0, 0, grey.cols, grey.rows),
-                      settings.minFaceSize, 0, settings, false, false, boxes);
-    if (settings.profiles) impl_->runProfiles(grey, settings, boxes);
+    boxes = impl_->detectCascade(grey, settings);
   } else {
     impl_->hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, boxes);
+    boxes = rankAndSuppress(std::move(boxes), settings.overlapIou, 1.0);
   }
   if (scale != 1.0) {
     // Box edges scale exactly with the image (cv::resize keeps the pixel edges aligned).
@@ -268,8 +315,7 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
                            box.box.height / scale);
     }
   }
-  const double frontalWeight = kind_ == DetectorKind::Cascade ? settings.frontalPreference : 1.0;
-  return rankAndSuppress(std::move(boxes), settings.overlapIou, frontalWeight);
+  return boxes;
 }
 
 }  // namespace clm3d

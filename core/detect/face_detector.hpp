@@ -1,9 +1,10 @@
 // Face detection for the start of a search when there is no previous frame: OpenCV's Viola-Jones
 // cascades (a frontal cascade plus the profile cascade run on the image and on its mirror, since
 // OpenCV's profile cascade finds faces turned one way only; around the frontal faces, or over the
-// whole image when there are none) or dlib's HOG detector when dlib was
-// found at build time. One place that finds the cascade files, merges overlapping boxes and ranks
-// them, so the CLI, the GUI and the tests start from the same boxes (docs/initialisation.md).
+// whole image when there are none; dlib's HOG detector confirming their faces, or searching where
+// they find none) or dlib's HOG detector alone, when dlib was found at build time. One place that
+// finds the cascade files, merges overlapping boxes and ranks them, so the CLI, the GUI and the
+// tests start from the same boxes (docs/initialisation.md).
 #pragma once
 
 #include <filesystem>
@@ -56,6 +57,15 @@ struct FaceDetectorSettings {
   // replaces a frontal one only with clearly more support (both fire at 20-50 degrees of yaw)
   double frontalPreference = 2.0;
   double dlibThreshold = 0.0;  // dlib: added to the detector's threshold (lower finds more)
+  // cascade, when the build has dlib: where neither cascade finds a face, dlib's HOG detector
+  // searches the image (from minFaceSize up); its boxes carry DetectorKind::DlibHog.
+  bool dlibFallback = true;
+  // cascade, when the build has dlib: where the cascades find faces, dlib's HOG detector also
+  // searches the image without enlarging it (faces from max(minFaceSize, 64) pixels up, a
+  // quarter of its cost at minFaceSize 48). A face both detectors find (IoU > overlapIou) keeps
+  // the cascade's box and ranks first; then the largest face; a face dlib alone finds joins the
+  // list. false: the cascade's boxes ranked by score, as without dlib.
+  bool dlibAgreement = true;
   // Cascade files, relative to the cascade directory (or absolute).
   std::string frontalCascade = "haarcascades/haarcascade_frontalface_alt2.xml";
   std::string profileCascade = "haarcascades/haarcascade_profileface.xml";
@@ -82,7 +92,8 @@ class FaceDetector {
   static bool available(DetectorKind kind);
 
   // Faces in an 8-bit grey, BGR or BGRA image, overlapping boxes merged, best first (highest
-  // score, cascade frontal scores times frontalPreference; then largest). Empty when there is none.
+  // score, cascade frontal scores times frontalPreference; then largest; with dlibAgreement the
+  // faces both detectors find first, then the largest). Empty when there is none.
   // Throws InputError for an empty image or an unsupported type.
   std::vector<FaceBox> detect(const cv::Mat& bgrOrGrey);
 
@@ -103,5 +114,13 @@ double boxIou(const cv::Rect2d& a, const cv::Rect2d& b);
 // an already kept box exceeds maxIou, or which lies mostly (> 70% of the smaller box) inside one
 // or around one.
 std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou);
+
+// The cascade's boxes (already ranked and suppressed) with dlib's (dlibAgreement): a cascade box
+// that a dlib box matches (IoU > maxIou) is confirmed and stays (the cascade's calibration places
+// the start closer); dlib boxes matching no cascade box join the list. Confirmed faces first, then
+// the larger; a box overlapping a better one as suppressOverlaps judges it goes (e.g. a cascade box
+// on part of a face that dlib found whole).
+std::vector<FaceBox> rankByAgreement(const std::vector<FaceBox>& cascade, std::vector<FaceBox> hog,
+                                     double maxIou);
 
 }  // namespace clm3d

@@ -55,6 +55,21 @@ TEST(DetectCli, CountsAnImageWithoutAFaceAndWritesJson) {
       runClm3d("detect --images " + dir.path().string() + " --no-profiles --profiles-everywhere")
           .exitCode,
       2);
+
+  // dlib's fallback and agreement are on when the build has dlib; the flags turn them off.
+  const bool dlib = report["settings"]["cascade_dlib_fallback"].get<bool>();
+  EXPECT_EQ(report["settings"]["cascade_dlib_agreement"], dlib);
+  const auto cascadeOnly = runClm3d("detect --images " + dir.path().string() +
+                                    " --detector cascade --no-dlib-fallback --no-dlib-agreement "
+                                    "--dlib-threshold -0.2 --quiet --out " +
+                                    out.string());
+  ASSERT_EQ(cascadeOnly.exitCode, 0) << cascadeOnly.output;
+  EXPECT_TRUE(test::contains(cascadeOnly.output, "cascade with dlib: fallback off, agreement off"))
+      << cascadeOnly.output;
+  const nlohmann::json settings = nlohmann::json::parse(test::readFile(out))["settings"];
+  EXPECT_EQ(settings["cascade_dlib_fallback"], false);
+  EXPECT_EQ(settings["cascade_dlib_agreement"], false);
+  EXPECT_DOUBLE_EQ(settings["dlib_threshold"].get<double>(), -0.2);
 }
 
 TEST(DetectCli, ErrorsNameTheFile) {
