@@ -174,6 +174,10 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   return TrackFailure::None;
 }
 
+bool Tracker::trustsState(const FitResult& fit) const {
+  return std::isnan(fit.searchConfidence) || fit.searchConfidence >= minConfidence();
+}
+
 TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   TrackStep step;
   step.row.frame = index;
@@ -228,13 +232,21 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
 
   step.fitMilliseconds = searchMs;
   if (step.failure == TrackFailure::None && step.fit) {
-    if (fromPrevious && !step.detected) {
-      before_ = state_;
+    if (trustsState(*step.fit)) {
+      if (fromPrevious && !step.detected) {
+        before_ = state_;
+      } else {
+        before_.reset();  // a detection is no motion
+      }
+      state_ = step.fit->state;
+      view_ = step.fit->view;
     } else {
-      before_.reset();  // a detection is no motion
+      // Tracked (its refined points passed the check), but the next frame starts from the
+      // detector, not from this search's 3D state.
+      state_.reset();
+      before_.reset();
+      view_ = -1;
     }
-    state_ = step.fit->state;
-    view_ = step.fit->view;
   } else {
     reset();
   }

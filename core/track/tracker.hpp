@@ -136,6 +136,9 @@ class Tracker {
 
  private:
   TrackFailure judge(const FitResult& fit) const;
+  // Whether a tracked fit's 3D state may start the next frame: always, unless the check passed
+  // a fit whose search scored below the search's own threshold (then the next frame is detected).
+  bool trustsState(const FitResult& fit) const;
   template <typename Attempt>
   void searchNeighbouringViews(TrackStep& step, Attempt& attempt);
   FaceDetector& detector();

@@ -198,5 +198,32 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   EXPECT_LT(lost.fit->confidence, settings.minCheckProbability);
 }
 
+// A checked frame is reported on the check, but its 3D state starts the next frame only when the
+// search scored above its own threshold; else the next frame is detected afresh (a drifting pose
+// whose refined points are still right must not carry on).
+TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
+  const auto twoFrames = [&](double minConfidence) {
+    TrackerSettings settings;
+    settings.minConfidence = minConfidence;  // the default optimiser's (NCC) threshold
+    settings.minExpertConfidence = minConfidence;
+    Tracker tracker(model, scene.camera, settings);
+    tracker.setState(scene.truth, -1);
+    TrackStep first = tracker.track(scene.image, 0, 0.0);
+    TrackStep second = tracker.track(scene.image, 1, 0.04);
+    return std::pair{std::move(first), std::move(second)};
+  };
+  const auto [trusted, next] = twoFrames(0.0);
+  ASSERT_TRUE(trusted.row.success);
+  EXPECT_FALSE(next.detected);
+  const auto [doubted, detected] = twoFrames(0.999);
+  ASSERT_TRUE(doubted.fit.has_value());
+  ASSERT_LT(doubted.fit->searchConfidence, 0.999);
+  EXPECT_TRUE(doubted.row.success) << toString(doubted.failure);
+  EXPECT_TRUE(detected.detected);
+}
+
 }  // namespace
 }  // namespace clm3d
