@@ -103,20 +103,17 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   model.refiner = fixture().refiner;
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
-  writeImage(dir / "face.png", scene.image);
-  LandmarkSet start(25, 2);
-  for (int i = 0; i < 25; ++i) start.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
-  writeLandmarks(dir / "start.pts", start, Scheme::thesis25());
+  savePhoto(dir.path(), "face", scene);  // face.png, and its true points in face.pts: the start
 
   ImageFitSettings plain;
   plain.refine = false;
   ImageFitter unrefined(model, plain);
-  const ImageFitOutcome searched = unrefined.fitFile(dir / "face.png", dir / "start.pts");
+  const ImageFitOutcome searched = unrefined.fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
 
   ImageFitter refining(model, ImageFitSettings{});
   const ImageFitOutcome refined =
-      refining.fitFile(dir / "face.png", dir / "start.pts", dir / "out.pts");
+      refining.fitFile(dir / "face.png", dir / "face.pts", dir / "out.pts");
   ASSERT_EQ(refined.status, ImageFitStatus::Ok) << refined.message;
   const Eigen::Matrix2Xd expected = refinePoints(model.refiner, scene.image, searched.fit->points);
   EXPECT_TRUE(refined.fit->points.isApprox(expected, 1e-9));
@@ -151,13 +148,10 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   ASSERT_FALSE(model.refiner.check.empty()) << "48 faces learn a check";
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
-  writeImage(dir / "face.png", scene.image);
-  LandmarkSet start(25, 2);
-  for (int i = 0; i < 25; ++i) start.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
-  writeLandmarks(dir / "start.pts", start, Scheme::thesis25());
+  savePhoto(dir.path(), "face", scene);  // face.png, and its true points in face.pts: the start
 
   ImageFitter fitter(model, ImageFitSettings{});
-  const ImageFitOutcome right = fitter.fitFile(dir / "face.png", dir / "start.pts");
+  const ImageFitOutcome right = fitter.fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(right.status, ImageFitStatus::Ok) << right.message;
   EXPECT_TRUE(std::isfinite(right.fit->searchConfidence));
   EXPECT_GT(right.fit->confidence, 0.5);
@@ -170,7 +164,7 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
                                            s.refine = false;
                                            return s;
                                          }())
-                                 .fitFile(dir / "face.png", dir / "start.pts")
+                                 .fitFile(dir / "face.png", dir / "face.pts")
                                  .fit->points)
                   .rightProbability,
               1e-9);
