@@ -1,6 +1,7 @@
 // Random misplacements of a face's true points, the starts the point refiner and its check learn
 // from: the points moved together by a similarity (shift, scale, roll), as a search misplaces a
-// whole face, and each by a small offset of its own.
+// whole face, and each by a small offset of its own; and how far such points end from the truth
+// (what labels the check's training samples right or wrong).
 #pragma once
 
 #include <Eigen/Core>

@@ -126,9 +126,8 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   EXPECT_EQ(parseError(""), "m.clm3d: not a clm3d model");
   std::string newer = good;
   writeU32(newer, 8, 7);
-  EXPECT_EQ(parseError(newer),
-            "m.clm3d: format version 7 is newer than this clm3d (" +
-                std::to_string(kModelFormatVersion) + "); update clm3d");
+  EXPECT_EQ(parseError(newer), "m.clm3d: format version 7 is newer than this clm3d (" +
+                                   std::to_string(kModelFormatVersion) + "); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
   EXPECT_NE(parseError(zero).find("corrupt"), std::string::npos);
@@ -150,6 +149,23 @@ std::string headerOf(const std::string& file) {
   std::uint64_t headerLength = 0;
   std::memcpy(&headerLength, file.data() + 24, 8);
   return file.substr(32, headerLength);
+}
+
+using HeaderEdit = std::tuple<std::string, std::string, std::string>;  // from, to, expected
+
+// Each edit replaces `from` (the first after `anchor`) with `to` in the header of `bytes`; the file
+// must then be refused with a message containing `expected`.
+void expectEditsRefused(const std::string& bytes, const std::string& anchor,
+                        const std::vector<HeaderEdit>& edits) {
+  const std::string header = headerOf(bytes);
+  for (const auto& [from, to, expected] : edits) {
+    std::string edited = header;
+    const auto at = edited.find(from, edited.find(anchor));
+    ASSERT_NE(at, std::string::npos) << from;
+    edited.replace(at, from.size(), to);
+    EXPECT_NE(parseError(withHeader(bytes, edited)).find(expected), std::string::npos)
+        << to << ": " << parseError(withHeader(bytes, edited));
+  }
 }
 
 TEST(ModelFile, UnknownHeaderKeysAreRefusedNamingTheFileAndTheKey) {
@@ -349,19 +365,10 @@ TEST(ModelFile, PointRefinerRoundTrips) {
   EXPECT_EQ(headerOf(serializeModel(tinyModelWithExperts())).find("refiner"), std::string::npos);
 
   // A second stage in the header without its arrays, a landmark beyond the scheme, an unknown key.
-  const std::string header = headerOf(bytes);
-  for (const auto& [from, to, expected] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{
-           {"\"windows\":[0.6]", "\"windows\":[0.6,0.5]", "bytes of arrays"},
-           {"\"landmarks\":[0,1,2]", "\"landmarks\":[0,1,99]", "refiner"},
-           {"\"leftEye\":", "\"leftEyes\":", "refiner.leftEye"}}) {
-    std::string edited = header;
-    const auto at = edited.find(from, edited.find("\"refiner\""));
-    ASSERT_NE(at, std::string::npos) << from;
-    edited.replace(at, from.size(), to);
-    EXPECT_NE(parseError(withHeader(bytes, edited)).find(expected), std::string::npos)
-        << to << ": " << parseError(withHeader(bytes, edited));
-  }
+  expectEditsRefused(bytes, "\"refiner\"",
+                     {{"\"windows\":[0.6]", "\"windows\":[0.6,0.5]", "bytes of arrays"},
+                      {"\"landmarks\":[0,1,2]", "\"landmarks\":[0,1,99]", "refiner"},
+                      {"\"leftEye\":", "\"leftEyes\":", "refiner.leftEye"}});
 
   const std::filesystem::path v3 = std::filesystem::path(CLM3D_TEST_FIXTURES) /
                                    "../fuzz/corpus/fuzz_model_file/tiny-experts-v3.clm3d";
@@ -397,18 +404,9 @@ TEST(ModelFile, RefinerCheckRoundTrips) {
   EXPECT_EQ(back.offset, 0.125);
 
   // An unknown key in the check, a window out of range.
-  const std::string header = headerOf(bytes);
-  for (const auto& [from, to, expected] :
-       std::vector<std::tuple<std::string, std::string, std::string>>{
-           {"\"slope\":", "\"slopes\":", "refiner.check.slope"},
-           {"\"window\":0.7", "\"window\":7.0", "check.window"}}) {
-    std::string edited = header;
-    const auto at = edited.find(from, edited.find("\"check\""));
-    ASSERT_NE(at, std::string::npos) << from;
-    edited.replace(at, from.size(), to);
-    EXPECT_NE(parseError(withHeader(bytes, edited)).find(expected), std::string::npos)
-        << to << ": " << parseError(withHeader(bytes, edited));
-  }
+  expectEditsRefused(bytes, "\"check\"",
+                     {{"\"slope\":", "\"slopes\":", "refiner.check.slope"},
+                      {"\"window\":0.7", "\"window\":7.0", "check.window"}});
 
   const std::filesystem::path v4 = std::filesystem::path(CLM3D_TEST_FIXTURES) /
                                    "../fuzz/corpus/fuzz_model_file/tiny-refiner-v4.clm3d";

@@ -156,17 +156,14 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   EXPECT_TRUE(std::isfinite(right.fit->searchConfidence));
   EXPECT_GT(right.fit->confidence, 0.5);
   EXPECT_LE(right.fit->confidence, 1.0);
+  // The confidence is the check of the search's points refined (the same search, unrefined).
+  ImageFitSettings plain;
+  plain.refine = false;
+  const ImageFitOutcome searched =
+      ImageFitter(model, plain).fitFile(dir / "face.png", dir / "face.pts");
+  ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
   EXPECT_NEAR(right.fit->confidence,
-              refineAndCheck(model.refiner, scene.image,
-                             ImageFitter(model,
-                                         [] {
-                                           ImageFitSettings s;
-                                           s.refine = false;
-                                           return s;
-                                         }())
-                                 .fitFile(dir / "face.png", dir / "face.pts")
-                                 .fit->points)
-                  .rightProbability,
+              refineAndCheck(model.refiner, scene.image, searched.fit->points).rightProbability,
               1e-9);
   // Points moved by most of an eye distance stay wrong after refining, and the check says so.
   for (const Eigen::Vector2d& share : {Eigen::Vector2d(0.7, 0.4), Eigen::Vector2d(-0.6, -0.6)}) {
