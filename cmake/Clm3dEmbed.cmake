@@ -9,8 +9,8 @@ function(clm3d_embed_text target file symbol)
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${content}")
   file(WRITE ${out}.tmp
        "// Generated from ${file}; do not edit.\n#include <string_view>\n"
-       "namespace clm3d::embedded {\nnamespace {\nconstexpr char kData[] = {${bytes} 0};\n}\n"
-       "std::string_view ${symbol}() { return {kData, ${byte_count}}; }\n}\n")
+       "namespace clm3d::embedded {\nnamespace {\nconstexpr char ${symbol}Data[] = {${bytes} 0};\n}\n"
+       "std::string_view ${symbol}() { return {${symbol}Data, ${byte_count}}; }\n}\n")
   configure_file(${out}.tmp ${out} COPYONLY)
   target_sources(${target} PRIVATE ${out})
 endfunction()

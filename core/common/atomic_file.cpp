@@ -68,4 +68,12 @@ std::string readTextFile(const std::filesystem::path& path) {
   return buffer.str();
 }
 
+void createParentFolder(const std::filesystem::path& file) {
+  const std::filesystem::path parent = file.parent_path();
+  if (parent.empty()) return;
+  std::error_code error;
+  std::filesystem::create_directories(parent, error);
+  if (error) throwInputError(parent, "cannot create the folder: " + error.message());
+}
+
 }  // namespace clm3d

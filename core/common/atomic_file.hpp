@@ -18,6 +18,10 @@ void writeFileAtomically(const std::filesystem::path& path,
 void writeTextAtomically(const std::filesystem::path& path, std::string_view text);
 void writeBytesAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);
 
+// Creates the folder that is to hold `file`, with its parents; throws InputError naming it if
+// it cannot be created.
+void createParentFolder(const std::filesystem::path& file);
+
 // Reads a whole file; throws InputError naming it if it cannot be opened or read.
 std::string readTextFile(const std::filesystem::path& path);
 

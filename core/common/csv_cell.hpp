@@ -14,6 +14,8 @@
 #include <system_error>
 #include <vector>
 
+#include "core/common/number_text.hpp"
+
 namespace clm3d {
 
 inline std::string csvCell(std::string_view text) {
@@ -62,11 +64,7 @@ inline std::optional<std::vector<std::string>> parseCsvLine(std::string_view lin
 
 // Locale-independent fixed-point text; empty for NaN and infinities.
 inline std::string fixedCell(double value, int decimals) {
-  if (!std::isfinite(value)) return {};
-  char buffer[64];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, end) : std::string();
+  return fixedText(value, decimals, {});
 }
 
 }  // namespace clm3d

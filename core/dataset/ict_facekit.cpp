@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kMillimetresPerUnit = 10.0;  // ICT-FaceKit meshes are in centimetres
+constexpr double kIctMillimetresPerUnit = 10.0;  // ICT-FaceKit meshes are in centimetres
 constexpr std::size_t kChunk = 1 << 20;
 const char* const kNeutralName = "generic_neutral_mesh";
 
@@ -219,11 +219,11 @@ IctLandmarkBasis loadIctBasis(const fs::path& model, const std::vector<int>& ver
     throwInputError(model, std::string("holds no ") + kNeutralName + ".obj");
   }
   IctLandmarkBasis basis;
-  basis.neutral = neutral->second * kMillimetresPerUnit;
+  basis.neutral = neutral->second * kIctMillimetresPerUnit;
   const std::regex identityName("identity[0-9]+");
   for (const auto& [name, points] : meshes) {  // std::map: sorted by name
     if (name == kNeutralName) continue;
-    const Eigen::Matrix3Xd delta = points * kMillimetresPerUnit - basis.neutral;
+    const Eigen::Matrix3Xd delta = points * kIctMillimetresPerUnit - basis.neutral;
     if (std::regex_match(name, identityName)) {
       basis.identities.push_back(delta);
     } else {

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The base mesh is in decimetres.
-constexpr float kMillimetresPerUnit = 100.0f;
+constexpr float kMakeHumanMillimetresPerUnit = 100.0f;
 // Faces of `body` with every vertex above the plane y = kNeckCutY + kNeckCutSlope * (kNeckCutZ - z)
 // (base units) are the head: the cut runs under the chin (the chin's lowest point is at y 6.39,
 // z 1.50) and rises towards the back of the neck; shoulders and body go.
@@ -688,7 +688,7 @@ MakeHumanAssets::Head MakeHumanAssets::generate(std::uint64_t seed, const std::s
   mesh.source = (d.root / "base" / "base.obj").string() + " (MakeHuman identity " +
                 std::to_string(seed) + ", " + expression + ")";
   for (std::size_t i = 0; i < d.head.source.size(); ++i) {
-    mesh.positions.push_back(kMillimetresPerUnit *
+    mesh.positions.push_back(kMakeHumanMillimetresPerUnit *
                              positions[static_cast<std::size_t>(d.head.source[i])]);
   }
   mesh.uvs = d.head.uvs;
@@ -711,7 +711,7 @@ MakeHumanAssets::Head MakeHumanAssets::generate(std::uint64_t seed, const std::s
     }
     const int offset = static_cast<int>(mesh.positions.size());
     for (std::size_t i = 0; i < d.eyeMesh.source.size(); ++i) {
-      mesh.positions.push_back(kMillimetresPerUnit *
+      mesh.positions.push_back(kMakeHumanMillimetresPerUnit *
                                placed[static_cast<std::size_t>(d.eyeMesh.source[i])]);
     }
     mesh.uvs.insert(mesh.uvs.end(), d.eyeMesh.uvs.begin(), d.eyeMesh.uvs.end());
@@ -741,7 +741,7 @@ MakeHumanAssets::Head MakeHumanAssets::generate(std::uint64_t seed, const std::s
       }
     }
     head.landmarks.set(static_cast<int>(i),
-                       Eigen::Vector3d((kMillimetresPerUnit * p).cast<double>()));
+                       Eigen::Vector3d((kMakeHumanMillimetresPerUnit * p).cast<double>()));
   }
   return head;
 }

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/viz/image_file.hpp"
 
 namespace clm3d {
@@ -36,13 +37,6 @@ cv::Scalar seriesColour(std::size_t i) {
       {180, 119, 31}, {14, 127, 255},  {44, 160, 44},   {40, 39, 214},  {189, 103, 148},
       {75, 86, 140},  {194, 119, 227}, {127, 127, 127}, {34, 189, 188}, {207, 190, 23}};
   return palette[i % (sizeof(palette) / sizeof(palette[0]))];
-}
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  const auto [ptr, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, ptr) : std::string("?");
 }
 
 struct TextSize {
@@ -93,7 +87,7 @@ Axis niceAxis(double min, double max, const std::string& label, int target = 6,
   const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
   Axis axis{min, max, {}, label};
   for (double v = std::ceil(min / step - 1e-9) * step; v <= max + step * 1e-9; v += step) {
-    axis.ticks.push_back({v, fixed(std::abs(v) < step * 1e-9 ? 0.0 : v, decimals)});
+    axis.ticks.push_back({v, fixedText(std::abs(v) < step * 1e-9 ? 0.0 : v, decimals)});
   }
   return axis;
 }
@@ -297,7 +291,7 @@ std::vector<LegendEntry> lineLegend(const std::vector<SequenceEvaluation>& seque
 }
 
 std::string thresholdLabel(double threshold) {
-  return fixed(threshold, 2);
+  return fixedText(threshold, 2);
 }
 
 }  // namespace
@@ -346,7 +340,7 @@ cv::Mat plotErrorPerFrame(const std::vector<SequenceEvaluation>& sequences,
   const bool clipped = maxError > yMax;
   Chart chart("Frame error against frame", niceAxis(firstFrame, lastFrame, "frame", 8, true),
               niceAxis(0.0, yMax,
-                       clipped ? "frame error (eq. 5.1), clipped at " + fixed(yMax, 1)
+                       clipped ? "frame error (eq. 5.1), clipped at " + fixedText(yMax, 1)
                                : "frame error (eq. 5.1)",
                        5),
               lineLegend(sequences));
@@ -456,7 +450,7 @@ cv::Mat plotLines(const std::vector<LineSeries>& series, const LinePlotOptions& 
         const double v = std::log10(m) + decade;
         if (v < x.min - 1e-9 || v > x.max + 1e-9) continue;
         const double value = m * std::pow(10.0, decade);
-        x.ticks.push_back({v, fixed(value, value >= 1.0 ? 0 : static_cast<int>(-decade))});
+        x.ticks.push_back({v, fixedText(value, value >= 1.0 ? 0 : static_cast<int>(-decade))});
       }
     }
   } else {

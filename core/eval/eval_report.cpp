@@ -8,6 +8,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/scheme/text_scan.hpp"
 
 namespace clm3d {
@@ -139,31 +140,23 @@ json comparisonJson(const EvaluationReport& report) {
   return {{"test", nullptr}, {"note", c.note}};
 }
 
-// Fixed or scientific notation with std::to_chars: locale-independent, like the CSV writers.
-std::string fixed(double v, int decimals) {
-  char buffer[64];
-  const auto [ptr, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), v, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, ptr) : std::string("n/a");
-}
-
 }  // namespace
 
 std::string formatErrorValue(double v) {
-  return std::isfinite(v) ? fixed(v, 4) : std::string("n/a");
+  return std::isfinite(v) ? fixedText(v, 4) : std::string("n/a");
 }
 
 std::string formatFrames(double frames) {
-  return std::isfinite(frames) ? fixed(frames, 2) : std::string("n/a");
+  return std::isfinite(frames) ? fixedText(frames, 2) : std::string("n/a");
 }
 
 std::string formatShare(double share) {
-  return std::isfinite(share) ? fixed(100.0 * share, 1) + "%" : std::string("n/a");
+  return std::isfinite(share) ? fixedText(100.0 * share, 1) + "%" : std::string("n/a");
 }
 
 std::string formatPValue(double p) {
   if (!std::isfinite(p)) return "n/a";
-  if (p >= 1e-4) return fixed(p, 4);
+  if (p >= 1e-4) return fixedText(p, 4);
   char buffer[64];
   const auto [ptr, ec] =
       std::to_chars(buffer, buffer + sizeof(buffer), p, std::chars_format::scientific, 2);
@@ -178,13 +171,13 @@ std::string formatComparison(const EvaluationReport& report) {
   };
   if (c.kind == Comparison::Kind::Welch) {
     return "Welch's t-test on frame errors, " + report.sequences[0].label + " vs " +
-           report.sequences[1].label + ": t = " + fixed(c.welch.t, 3) +
-           ", df = " + fixed(c.welch.df, 1) + ", p = " + formatPValue(c.welch.p) +
+           report.sequences[1].label + ": t = " + fixedText(c.welch.t, 3) +
+           ", df = " + fixedText(c.welch.df, 1) + ", p = " + formatPValue(c.welch.p) +
            verdict(c.welch.p);
   }
   if (c.kind == Comparison::Kind::Anova) {
-    return "one-way ANOVA on frame errors: F(" + fixed(c.anova.df1, 0) + ", " +
-           fixed(c.anova.df2, 0) + ") = " + fixed(c.anova.f, 3) +
+    return "one-way ANOVA on frame errors: F(" + fixedText(c.anova.df1, 0) + ", " +
+           fixedText(c.anova.df2, 0) + ") = " + fixedText(c.anova.f, 3) +
            ", p = " + formatPValue(c.anova.p) + verdict(c.anova.p);
   }
   if (!c.note.empty()) return "no significance test: " + c.note;
@@ -321,7 +314,7 @@ std::string formatReportText(const EvaluationReport& report) {
   out += "ground truth: " + report.truthSource + " (" + std::to_string(truthFrames) + " frames" +
          (truths > 1 ? " in " + std::to_string(truths) + " sequences, pooled" : "") + ", scheme " +
          report.schemeName + ", error = point distance / inter-ocular " + "distance, threshold " +
-         fixed(report.options.threshold, 2) + ")\n";
+         fixedText(report.options.threshold, 2) + ")\n";
   for (const auto& sequence : report.sequences) {
     const auto& s = sequence.summary;
     out += "\n" + sequence.label + " (" + sequence.source + ")\n";
@@ -341,7 +334,7 @@ std::string formatReportText(const EvaluationReport& report) {
            ", SD " + formatErrorValue(s.sd) + ", min " + formatErrorValue(s.min) + ", max " +
            formatErrorValue(s.max) + "\n";
     out += "  convergence rate " + formatShare(s.convergenceRate) + ", points within " +
-           fixed(report.options.threshold, 2) + ": " + formatShare(s.withinThreshold) + " (" +
+           fixedText(report.options.threshold, 2) + ": " + formatShare(s.withinThreshold) + " (" +
            std::to_string(s.foundPoints) + "/" + std::to_string(s.truePoints) + ")\n";
     out += "  regions (mean point error):";
     for (const auto& region : s.regions)
@@ -376,7 +369,7 @@ std::string formatBucketsText(const EvaluationReport& report) {
     }
   }
   out += " outside |\n" + rule + "---|\n";
-  const std::string within = "points within " + fixed(report.options.threshold, 2);
+  const std::string within = "points within " + fixedText(report.options.threshold, 2);
   for (std::size_t p = 0; p < b.buckets.size(); ++p) {
     const std::string& label = report.sequences.at(p).label;
     const auto row = [&](const std::string& figure, const auto& cell, bool withCount) {
@@ -435,7 +428,7 @@ std::string formatBucketsCsv(const EvaluationReport& report) {
     for (const auto& region : report.sequences[0].summary.regions) out += "," + region.name;
   }
   out += "\n";
-  const auto cell = [](double v) { return std::isfinite(v) ? fixed(v, 6) : std::string(); };
+  const auto cell = [](double v) { return std::isfinite(v) ? fixedText(v, 6) : std::string(); };
   for (std::size_t p = 0; p < b.buckets.size(); ++p) {
     std::string label = report.sequences.at(p).label;
     std::replace_if(

@@ -6,12 +6,11 @@
 #include <unordered_map>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/eval/statistics.hpp"
 
 namespace clm3d {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 bool hasPoint(const Eigen::Matrix2Xd& points, int i) {
   return std::isfinite(points(0, i)) && std::isfinite(points(1, i));

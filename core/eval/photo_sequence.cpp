@@ -50,14 +50,6 @@ std::vector<double> smoothSignal(std::uint64_t key, int frames, double minPeriod
   return signal;
 }
 
-void createParent(const fs::path& file) {
-  const fs::path parent = file.parent_path();
-  if (parent.empty()) return;
-  std::error_code error;
-  fs::create_directories(parent, error);
-  if (error) throwInputError(parent, "cannot create the folder: " + error.message());
-}
-
 std::string relativeTo(const fs::path& file, const fs::path& folder) {
   return file.parent_path() == folder ? file.filename().string() : file.string();
 }
@@ -198,7 +190,7 @@ PhotoSequenceSummary writePhotoSequence(const cv::Mat& photo, const LandmarkSet&
   summary.face = photoFace(points);
   summary.motion = photoTrajectory(settings, summary.face.size);
   for (const fs::path& file : {files.video, files.truth, files.visibility, files.description}) {
-    createParent(file);
+    createParentFolder(file);
   }
 
   const int n = points.size();

@@ -20,14 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fixedDecimals(double value, int decimals) {
-  if (!std::isfinite(value)) return {};
-  char buffer[64];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, end) : std::string();
-}
-
 void requireFolder(const fs::path& folder) {
   std::error_code error;
   if (!fs::is_directory(folder, error)) throwInputError(folder, "no such folder");
@@ -147,9 +139,9 @@ std::string formatPointFolderText(const PointFolderReport& report) {
   for (const PointFolderMethod& m : report.methods) {
     out << m.label << " (" << m.folder.string() << "): mean error " << formatErrorValue(m.meanError)
         << ", median " << formatErrorValue(m.medianError) << " over " << m.predicted << '/'
-        << m.images << " images; within " << fixedDecimals(report.threshold, 2) << ": "
-        << m.foundPoints << '/' << m.truePoints << " points ("
-        << (std::isfinite(m.foundShare) ? fixedDecimals(100.0 * m.foundShare, 1) + "%" : "n/a")
+        << m.images << " images; within " << fixedCell(report.threshold, 2) << ": " << m.foundPoints
+        << '/' << m.truePoints << " points ("
+        << (std::isfinite(m.foundShare) ? fixedCell(100.0 * m.foundShare, 1) + "%" : "n/a")
         << "); missing predictions: " << m.missing << '\n';
   }
   return out.str();
@@ -195,10 +187,9 @@ std::string formatPointFolderCsv(const PointFolderReport& report) {
         out << "missing,,," << report.truePoints[i] << ",,,,\n";
         continue;
       }
-      out << "ok," << fixedDecimals(result->error, 6) << ',' << fixedDecimals(result->maxError, 6)
-          << ',' << result->truePoints << ',' << result->scoredPoints << ',' << result->foundPoints
-          << ',' << fixedDecimals(result->interOcular, 3) << ',' << csvCell(m.files[i]->string())
-          << '\n';
+      out << "ok," << fixedCell(result->error, 6) << ',' << fixedCell(result->maxError, 6) << ','
+          << result->truePoints << ',' << result->scoredPoints << ',' << result->foundPoints << ','
+          << fixedCell(result->interOcular, 3) << ',' << csvCell(m.files[i]->string()) << '\n';
     }
   }
   return out.str();

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/scheme/landmark_file.hpp"
 
@@ -36,15 +37,6 @@ int checkedIndex(long number, std::string_view item, const Scheme& scheme) {
                                 std::to_string(scheme.size()) + " (scheme " + scheme.name() + ")");
   }
   return static_cast<int>(number - 1);
-}
-
-// Locale-independent fixed-point text.
-std::string fixedDecimals(double value, int decimals) {
-  if (!std::isfinite(value)) return "n/a";
-  char buffer[64];
-  const auto [ptr, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::fixed, decimals);
-  return ec == std::errc() ? std::string(buffer, ptr) : std::string("?");
 }
 
 Eigen::Vector2d xy(const LandmarkSet& set, int i) {
@@ -188,8 +180,8 @@ std::string formatPointReportText(const PointEvaluationReport& report) {
     out << r.label << " (" << report.predictionSources[i] << "): error "
         << formatErrorValue(r.error) << " over " << r.scoredPoints << '/' << r.truePoints
         << " points, max " << formatErrorValue(r.maxError) << ", within "
-        << fixedDecimals(report.threshold, 2) << ": " << r.foundPoints << '/' << r.scoredPoints
-        << "; eye distance " << fixedDecimals(r.interOcular, 1) << " px\n";
+        << fixedText(report.threshold, 2, "n/a") << ": " << r.foundPoints << '/' << r.scoredPoints
+        << "; eye distance " << fixedText(r.interOcular, 1, "n/a") << " px\n";
   }
   return out.str();
 }

@@ -6,11 +6,10 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 
 namespace clm3d {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 double sampleVariance(std::span<const double> values, double mean) {
   if (values.size() < 2) return 0.0;

@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxFrames = 100000;
 
-std::string number(double value) {
+std::string shortNumber(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
@@ -84,14 +84,6 @@ void composite(const cv::Mat& bgra, const cv::Mat& background, cv::Mat& bgr, cv:
   }
 }
 
-void createParent(const fs::path& file) {
-  const fs::path parent = file.parent_path();
-  if (parent.empty()) return;
-  std::error_code ec;
-  fs::create_directories(parent, ec);
-  if (ec) throwInputError(parent, "cannot create the folder: " + ec.message());
-}
-
 std::string orderName(SequenceOrder order) {
   return order == SequenceOrder::Sweep ? "sweep" : "range";
 }
@@ -120,13 +112,13 @@ void SequenceSettings::validate() const {
           "pitch must be within -90..90 degrees");
   require(finite(rollDeg) && std::abs(rollDeg) <= 180.0, "roll must be within -180..180 degrees");
   require(finite(stepDeg) && stepDeg >= 0.01 && stepDeg <= 90.0,
-          "step must be 0.01..90 degrees per frame, got " + number(stepDeg));
+          "step must be 0.01..90 degrees per frame, got " + shortNumber(stepDeg));
   require(finite(verticalFovDeg) && verticalFovDeg >= 1.0 && verticalFovDeg <= 150.0,
-          "vertical field of view must be 1..150 degrees, got " + number(verticalFovDeg));
+          "vertical field of view must be 1..150 degrees, got " + shortNumber(verticalFovDeg));
   require(finite(interOcularPixels) && interOcularPixels >= 4.0 &&
               interOcularPixels <= 0.9 * std::max(width, height),
           "face size (inter-ocular distance) must be 4 pixels .. 0.9 of the image, got " +
-              number(interOcularPixels));
+              shortNumber(interOcularPixels));
   require(finite(fps) && fps > 0.0 && fps <= 1000.0, "frame rate must be in (0, 1000]");
   require(backgroundGrey >= 0 && backgroundGrey <= 255, "background grey must be 0..255");
   require(supersample >= 1 && supersample <= 4, "supersample must be 1..4");
@@ -363,7 +355,7 @@ SequenceSummary writeSyntheticSequence(const TexturedMesh& mesh, const LandmarkS
                                        const CancelToken* cancel) {
   SequenceRenderer renderer(mesh, landmarks, scheme, settings);
   for (const fs::path& file : {files.video, files.truth, files.visibility, files.description}) {
-    createParent(file);
+    createParentFolder(file);
   }
   const int frames = renderer.frameCount();
   SequenceSummary summary;

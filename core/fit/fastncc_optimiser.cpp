@@ -26,10 +26,8 @@
 namespace clm3d {
 namespace {
 
-constexpr double kDamping = 0.01;               // relative to the diagonal of M
-constexpr double kMaxStepPatchFraction = 0.25;  // no point moves further than this * patch size
-constexpr double kMinKappa = 0.05;              // below: no interior maximum (maximiseLinearNcc)
-constexpr double kMinNccForPrior = 0.25;        // floor of the NCC that scales the prior weight
+constexpr double kMinKappa = 0.05;        // below: no interior maximum (maximiseLinearNcc)
+constexpr double kMinNccForPrior = 0.25;  // floor of the NCC that scales the prior weight
 
 class FastNccOptimiser final : public Optimiser {
  public:

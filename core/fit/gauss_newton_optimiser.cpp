@@ -37,12 +37,6 @@
 namespace clm3d {
 namespace {
 
-// Levenberg-style damping, relative to the diagonal (scale-free across pose and shape units).
-constexpr double kDamping = 0.01;
-// A step moves no point further than this share of the patch size: the linearisation of a
-// template is not worth more than a few of its pixels.
-constexpr double kMaxStepPatchFraction = 0.25;
-
 class GaussNewtonOptimiser final : public Optimiser {
  public:
   explicit GaussNewtonOptimiser(const OptimiserSettings& settings)

@@ -46,6 +46,13 @@ LinearNccSolution maximiseLinearNcc(double a, const Eigen::Ref<const Eigen::Vect
                                     Eigen::VectorXd& w, Eigen::VectorXd& delta,
                                     double minKappa = 0.05);
 
+// The Gauss-Newton steps on this linearisation (gauss-newton, fastncc) add this share of each
+// diagonal entry of the normal matrix (Levenberg damping, scale-free across pose and shape
+// units), and move no point further than this share of the patch size: the linearisation of a
+// template is not worth more than a few of its pixels.
+inline constexpr double kDamping = 0.01;
+inline constexpr double kMaxStepPatchFraction = 0.25;
+
 // Per-template derivatives and per-step sums of one SearchProblem. Notation (docs/fastncc.md):
 // t_k the masked, normalised template of landmark k, g_k the masked, normalised image patch at
 // the current point x_k, D_k (N x 2) the derivative of t_k when its texture is sampled at

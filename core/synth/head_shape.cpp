@@ -13,11 +13,10 @@
 namespace clm3d::synth {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double deg(double d) {
-  return d * kPi / 180.0;
+  return d * std::numbers::pi / 180.0;
 }
 
 Eigen::Vector3d direction(double theta, double phi) {
@@ -143,8 +142,8 @@ BrowField browField(const FaceLayout& L, double X, double Y) {
   const double length = L.browOuterX - L.browInnerX;
   b.u = (std::abs(X) - L.browInnerX) / length;
   const double uc = std::clamp(b.u, 0.0, 1.0);
-  const double centre =
-      mix(L.browInnerY, L.browOuterY, uc) + L.browArch * std::sin(kPi * std::pow(uc, 0.75));
+  const double centre = mix(L.browInnerY, L.browOuterY, uc) +
+                        L.browArch * std::sin(std::numbers::pi * std::pow(uc, 0.75));
   b.halfThickness = 0.6 * L.browThickness * (1.0 - 0.45 * uc);
   b.across = Y - centre;
   const double beyond = b.u < 0.0 ? -b.u * length : (b.u > 1.0 ? (b.u - 1.0) * length * 1.5 : 0.0);
@@ -225,7 +224,7 @@ double HeadShape::baseRadius(const Eigen::Vector3d& d) const {
 
 double HeadShape::hairlineAt(double theta) const {
   const FaceLayout& L = layout_;
-  const double a = std::abs(theta) * 180.0 / kPi;
+  const double a = std::abs(theta) * 180.0 / std::numbers::pi;
   const double earLine = L.earTop + 5.0;
   const std::array<std::pair<double, double>, 8> knots{{{0.0, L.foreheadHeight},
                                                         {30.0, L.foreheadHeight - 3.0},
@@ -455,7 +454,7 @@ EarSample EarShape::sample(double rho, double psi, bool lateral) const {
 }
 
 Eigen::Vector3d EarShape::lobePoint() const {
-  return sample(0.8, -kPi / 2.0, true).position;
+  return sample(0.8, -std::numbers::pi / 2.0, true).position;
 }
 
 }  // namespace clm3d::synth

@@ -13,7 +13,6 @@ namespace clm3d::synth {
 namespace {
 
 using Rgb = Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
 
 Rgb rgb(const ColourRgb& c) {
   return {c.r, c.g, c.b};
@@ -239,7 +238,8 @@ cv::Mat paintHeadTexture(const HeadShape& head, const EarShape& ear, const Angle
       for (int col = 0; col < size; ++col) {
         const double u = (col + 0.5) / size;
         const bool lateral = u < 0.5;
-        const double psi = -kPi + 2.0 * kPi * (lateral ? u : u - 0.5) / 0.5;
+        const double psi =
+            -std::numbers::pi + 2.0 * std::numbers::pi * (lateral ? u : u - 0.5) / 0.5;
         store(row, col, painter.ear(rho, psi, lateral));
       }
     }

@@ -14,7 +14,6 @@ namespace {
 
 using synth::kEarChartTop;
 using synth::kHeadChartBottom;
-constexpr double kPi = std::numbers::pi;
 constexpr int kLandmarkCount = 25;
 
 // Appends one triangle, oriented so that its normal points along `outward`.
@@ -85,9 +84,10 @@ void addEars(TexturedMesh& mesh, const synth::EarShape& ear, const Eigen::Vector
       for (int k = 0; k <= kRings; ++k) {
         const double rho = static_cast<double>(k) / kRings;
         for (int m = 0; m <= kSegments; ++m) {
-          const double psi = -kPi + 2.0 * kPi * (m == kSegments ? 0 : m) / kSegments;
+          const double psi =
+              -std::numbers::pi + 2.0 * std::numbers::pi * (m == kSegments ? 0 : m) / kSegments;
           Eigen::Vector3f p = ear.sample(rho, psi, lateral).position.cast<float>();
-          if (k == 0) p = ear.sample(0.0, -kPi, lateral).position.cast<float>();
+          if (k == 0) p = ear.sample(0.0, -std::numbers::pi, lateral).position.cast<float>();
           p.x() *= mirror;
           mesh.positions.push_back(p);
           const double u = 0.5 * static_cast<double>(m) / kSegments + (lateral ? 0.0 : 0.5);

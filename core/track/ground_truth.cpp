@@ -7,6 +7,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/scheme/landmark_set.hpp"
 #include "core/scheme/pts_format.hpp"
 #include "core/scheme/text_scan.hpp"
@@ -15,7 +16,6 @@
 namespace clm3d {
 namespace {
 
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kKeyframeColumn = "keyframe";
 
 TrackRow emptyRow(int frame, int landmarkCount, double timestamp) {

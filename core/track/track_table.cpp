@@ -13,6 +13,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/scheme/text_scan.hpp"
 #include "core/track/track_table_writer.hpp"
 
@@ -485,7 +486,6 @@ std::vector<std::string> numericTrackColumns(const TrackTable& table) {
 
 std::optional<double> trackColumnValue(const TrackTable& table, const TrackRow& row,
                                        std::string_view column) {
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   if (column == "frame") return row.frame;
   if (column == "timestamp") return row.timestamp;
   if (column == "success") return row.success ? 1.0 : 0.0;

@@ -25,18 +25,18 @@ namespace {
 namespace fs = std::filesystem;
 using test::runClm3d;
 
-struct Files {
+struct BatchJobFiles {
   test::TempDir dir;
   test::BatchInputs made;
-  Files() { made = test::makeBatchInputs(dir.path(), true); }
+  BatchJobFiles() { made = test::makeBatchInputs(dir.path(), true); }
   std::string batch(const fs::path& out, const std::string& more = "") const {
     return "batch --model " + made.model.string() + " --input " + made.inputs.string() +
            " --out-dir " + out.string() + " " + more;
   }
 };
 
-const Files& files() {
-  static const Files f;
+const BatchJobFiles& files() {
+  static const BatchJobFiles f;
   return f;
 }
 
@@ -137,7 +137,7 @@ TEST(BatchCli, ThreeShardsCoverEveryItemOnceAndMergeIntoTheWholeRun) {
 }
 
 TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
-  const Files& f = files();
+  const BatchJobFiles& f = files();
   // Ten copies of the two renders and a video, so the run is killed with items left.
   const fs::path inputs = f.dir / "many";
   fs::create_directories(inputs);
@@ -192,7 +192,7 @@ TEST(BatchCli, AKilledRunResumesWithoutRedoingFinishedItems) {
 }
 
 TEST(BatchCli, UsageErrorsAndMissingInputs) {
-  const Files& f = files();
+  const BatchJobFiles& f = files();
   EXPECT_EQ(runClm3d(f.batch(f.dir / "u", "--shard 4/3")).exitCode, 2);
   EXPECT_EQ(runClm3d(f.batch(f.dir / "u", "--shard x")).exitCode, 2);
   EXPECT_EQ(runClm3d("batch --input " + f.made.inputs.string()).exitCode, 2);
@@ -216,7 +216,7 @@ TEST(BatchCli, UsageErrorsAndMissingInputs) {
 // writeTrackTable's); the options are recorded beside the outputs, a rerun with other options is
 // refused, with the same ones it resumes, --redo takes new ones.
 TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
-  const Files& f = files();
+  const BatchJobFiles& f = files();
   const fs::path video = f.made.inputs / "d-left.avi";
   const fs::path job = f.dir / "one-video.txt";
   test::writeFile(job, video.string() + "\n");
@@ -244,7 +244,8 @@ TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
   const auto other = runClm3d(batch + " --smooth");
   EXPECT_EQ(other.exitCode, 1) << other.output;
   EXPECT_TRUE(test::contains(other.output, "options.txt")) << other.output;
-  EXPECT_TRUE(test::contains(other.output, "--motion-prediction 0.5 there, default now")) << other.output;
+  EXPECT_TRUE(test::contains(other.output, "--motion-prediction 0.5 there, default now"))
+      << other.output;
 
   const auto same = runClm3d(batch + options);
   EXPECT_EQ(same.exitCode, 0) << same.output;
@@ -254,7 +255,8 @@ TEST(BatchCli, VideosTakeTheTrackOptionsAndARerunMustGiveTheSame) {
   const auto redo = runClm3d(batch + " --redo");
   EXPECT_EQ(redo.exitCode, 0) << redo.output;
   EXPECT_EQ(test::readFile(out / "d-left.csv"), test::readFile(wholeRun() / "d-left.csv"));
-  EXPECT_FALSE(test::contains(test::readFile(out / "options.txt"), "smooth")) << "not recorded again";
+  EXPECT_FALSE(test::contains(test::readFile(out / "options.txt"), "smooth"))
+      << "not recorded again";
 }
 
 }  // namespace

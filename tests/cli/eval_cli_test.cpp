@@ -42,10 +42,10 @@ TrackTable face(int frames, double shift, int landmarks = 25) {
   return table;
 }
 
-struct Files {
+struct EvalFiles {
   test::TempDir dir;
   std::string truth, a, b;
-  Files() {
+  EvalFiles() {
     truth = (dir / "gt.csv").string();
     a = (dir / "multi.csv").string();
     b = (dir / "single.csv").string();
@@ -56,7 +56,7 @@ struct Files {
 };
 
 TEST(EvalCli, ComparesTwoPredictionsWithPlots) {
-  Files files;
+  EvalFiles files;
   const auto plots = files.dir / "plots";
   const auto result =
       runClm3d("eval --truth " + files.truth + " --pred " + files.a + " --pred " + files.b +
@@ -80,7 +80,7 @@ TEST(EvalCli, ComparesTwoPredictionsWithPlots) {
 }
 
 TEST(EvalCli, JsonGoesToStdoutAndTheReportFile) {
-  Files files;
+  EvalFiles files;
   const auto out = files.dir / "report.json";
   // stderr (where the report file is mentioned) is discarded inside the group, so the output
   // must be the JSON document alone.
@@ -101,7 +101,7 @@ TEST(EvalCli, JsonGoesToStdoutAndTheReportFile) {
 }
 
 TEST(EvalCli, ThreePredictionsGetAnAnova) {
-  Files files;
+  EvalFiles files;
   const auto c = (files.dir / "third.csv").string();
   writeTrackTable(c, face(30, 4.0));
   const auto result =
@@ -112,7 +112,7 @@ TEST(EvalCli, ThreePredictionsGetAnAnova) {
 }
 
 TEST(EvalCli, BrokenOrMissingFilesExitOneNamingTheFile) {
-  Files files;
+  EvalFiles files;
   const auto broken = (files.dir / "broken.csv").string();
   test::writeFile(broken, "frame,success,x_1,y_1\n0,1,abc,2\n");
   auto result = runClm3d("eval --truth " + files.truth + " --pred " + broken);
@@ -126,7 +126,7 @@ TEST(EvalCli, BrokenOrMissingFilesExitOneNamingTheFile) {
 }
 
 TEST(EvalCli, DifferentLandmarkCountsAreAClearError) {
-  Files files;
+  EvalFiles files;
   const auto other = (files.dir / "ibug.csv").string();
   writeTrackTable(other, face(30, 0.0, 68));
   const auto result = runClm3d("eval --truth " + files.truth + " --pred " + other);
@@ -143,7 +143,7 @@ TEST(EvalCli, DifferentLandmarkCountsAreAClearError) {
 }
 
 TEST(EvalCli, MissingPredictionIsAUsageError) {
-  Files files;
+  EvalFiles files;
   EXPECT_EQ(runClm3d("eval --truth " + files.truth).exitCode, 2);
 }
 

@@ -10,12 +10,10 @@
 namespace clm3d {
 namespace {
 
+using test::quoted;
+
 using test::runClm3d;
 using test::TempDir;
-
-std::string quoted(const std::filesystem::path& path) {
-  return "'" + path.string() + "'";
-}
 
 // A small procedural head saved as a scan with its landmarks.
 struct Scan {

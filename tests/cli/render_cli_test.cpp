@@ -12,6 +12,8 @@
 namespace clm3d {
 namespace {
 
+using test::quoted;
+
 using test::runClm3d;
 using test::TempDir;
 
@@ -27,10 +29,6 @@ std::filesystem::path writeSquare(const TempDir& dir) {
   const auto path = dir / "square.obj";
   saveObj(mesh, path);
   return path;
-}
-
-std::string quoted(const std::filesystem::path& path) {
-  return "'" + path.string() + "'";
 }
 
 TEST(RenderCli, WritesATransparentPng) {

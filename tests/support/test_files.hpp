@@ -36,6 +36,10 @@ struct CommandResult {
 CommandResult runCommand(const std::string& commandLine);
 // Runs build/bin/clm3d with the given arguments (already shell-quoted where needed).
 CommandResult runClm3d(const std::string& arguments);
+// `path` in single quotes, for a command line (the tests' paths hold no quote).
+inline std::string quoted(const std::filesystem::path& path) {
+  return "'" + path.string() + "'";
+}
 
 // Whether `text` (a command's output, a message, a file) holds `part`.
 inline bool contains(std::string_view text, std::string_view part) {

@@ -29,8 +29,8 @@ using Eigen::Vector3d;
 // The file's units are about 50 mm (README of the fixture); resources/datasets/scans.json says so.
 constexpr double kMmPerUnit = 50.0;
 // thesis25, 0-based.
-constexpr int kLeftOuter = 1, kRightOuter = 2, kLeftEye = 7, kLeftInner = 8, kRightInner = 9,
-              kRightEye = 10;
+constexpr int kLeftOuter = 1, kRightOuter = 2, kLpsLeftEye = 7, kLeftInner = 8, kRightInner = 9,
+              kLpsRightEye = 10;
 constexpr std::array<std::pair<int, int>, 9> kPlacedPairs = {
     {{1, 2}, {3, 6}, {4, 5}, {8, 9}, {12, 13}, {14, 15}, {18, 24}, {19, 23}, {20, 22}}};
 constexpr std::array<int, 5> kMidline = {0, 11, 16, 17, 21};
@@ -56,7 +56,7 @@ TEST(LeePerrySmithAnnotation, MissingAreExactlyTheEyeCentresTheReadmeLists) {
   for (int i = 0; i < lee.size(); ++i) {
     if (!lee.has(i)) missing.insert(i);
   }
-  EXPECT_EQ(missing, (std::set<int>{kLeftEye, kRightEye}));
+  EXPECT_EQ(missing, (std::set<int>{kLpsLeftEye, kLpsRightEye}));
   // The README names them (1-based, as in the thesis table) in its list of missing points.
   const std::string readme = test::readFile(test::fixturePath("leeperrysmith/README.md"));
   EXPECT_NE(readme.find("Missing: 8 (centre of left eye) and 11 (centre of right eye)"),
@@ -133,11 +133,12 @@ TEST(LeePerrySmithAnnotation, ManifestWithBothScansLoadsLevelled) {
   const TexturedSubject& james = subjects[0];
   const TexturedSubject& lee = subjects[1];
   EXPECT_EQ(lee.id, "leeperrysmith/neutral");
-  EXPECT_NEAR(james.landmarks.point(kLeftEye).y(), james.landmarks.point(kRightEye).y(), 1e-6);
+  EXPECT_NEAR(james.landmarks.point(kLpsLeftEye).y(), james.landmarks.point(kLpsRightEye).y(),
+              1e-6);
 
   EXPECT_EQ(lee.landmarks.presentCount(), 23);
-  EXPECT_FALSE(lee.landmarks.has(kLeftEye));
-  EXPECT_FALSE(lee.landmarks.has(kRightEye));
+  EXPECT_FALSE(lee.landmarks.has(kLpsLeftEye));
+  EXPECT_FALSE(lee.landmarks.has(kLpsRightEye));
   EXPECT_LT(lee.landmarks.point(0).norm(), 1e-9);
   const Vector3d left = 0.5 * (lee.landmarks.point(kLeftOuter) + lee.landmarks.point(kLeftInner));
   const Vector3d right =

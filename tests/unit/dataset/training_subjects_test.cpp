@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 using test::TempDir;
 using test::writeFile;
 
-constexpr int kLeftEye = 7, kRightEye = 10;  // thesis landmarks 8 and 11, 0-based
+constexpr int kSubjectLeftEye = 7, kSubjectRightEye = 10;  // thesis landmarks 8 and 11, 0-based
 
 DatasetManifest tinyProcedural(const TempDir& dir, const std::string& seeds = "3,5") {
   writeFile(dir / "tiny.json", R"({"version": 1, "procedural": [
@@ -40,8 +40,9 @@ TEST(LoadTexturedSubjects, ProceduralHeadsInManifestOrderWithLandmarkOneAtTheOri
     EXPECT_EQ(s.landmarks.dims(), 3);
     EXPECT_LT(s.landmarks.point(0).norm(), 1e-9);
     EXPECT_NO_THROW(s.mesh.validate());
-    EXPECT_NEAR(s.landmarks.point(kLeftEye).y(), s.landmarks.point(kRightEye).y(), 1e-6);
-    EXPECT_GT(s.landmarks.point(kLeftEye).x(), 0.0);  // +x is the subject's left
+    EXPECT_NEAR(s.landmarks.point(kSubjectLeftEye).y(), s.landmarks.point(kSubjectRightEye).y(),
+                1e-6);
+    EXPECT_GT(s.landmarks.point(kSubjectLeftEye).x(), 0.0);  // +x is the subject's left
   }
   EXPECT_FALSE(subjects[0].landmarks == subjects[1].landmarks);  // the smile moves points
   EXPECT_FALSE(subjects[0].landmarks == subjects[2].landmarks);  // another identity
@@ -105,8 +106,8 @@ TEST(LoadTexturedSubjects, JamesIsLevelledAndCentred) {
   EXPECT_EQ(james.id, "james/neutral");
   ASSERT_EQ(james.landmarks.presentCount(), 25);
   EXPECT_LT(james.landmarks.point(0).norm(), 1e-6);
-  const Eigen::Vector3d left = james.landmarks.point(kLeftEye);
-  const Eigen::Vector3d right = james.landmarks.point(kRightEye);
+  const Eigen::Vector3d left = james.landmarks.point(kSubjectLeftEye);
+  const Eigen::Vector3d right = james.landmarks.point(kSubjectRightEye);
   EXPECT_LT(std::abs(left.y() - right.y()), 1.0);
   EXPECT_LT(std::abs(left.z() - right.z()), 1.0);  // the scan's 6 degree yaw is removed
   EXPECT_GT(left.x(), right.x());

@@ -8,6 +8,7 @@
 
 #include "core/common/error.hpp"
 #include "core/viz/image_file.hpp"
+#include "tests/support/image_checks.hpp"
 #include "tests/support/test_support.hpp"
 #include "tests/unit/eval/eval_test_tables.hpp"
 
@@ -45,17 +46,6 @@ int countColour(const cv::Mat& image, const cv::Scalar& colour) {
 }
 
 // True if the outermost `margin` pixels are all white: nothing drawn runs off the picture.
-bool borderIsWhite(const cv::Mat& image, int margin = 3) {
-  for (int y = 0; y < image.rows; ++y) {
-    for (int x = 0; x < image.cols; ++x) {
-      const bool border =
-          x < margin || y < margin || x >= image.cols - margin || y >= image.rows - margin;
-      if (border && image.at<cv::Vec3b>(y, x) != cv::Vec3b(255, 255, 255)) return false;
-    }
-  }
-  return true;
-}
-
 void expectGoodPlot(const cv::Mat& image, int minWidth) {
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.type(), CV_8UC3);

@@ -8,12 +8,11 @@
 #include <cmath>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "tests/unit/eval/eval_test_tables.hpp"
 
 namespace clm3d {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 const RegionError& region(const ErrorSummary& summary, const std::string& name) {
   for (const auto& r : summary.regions) {

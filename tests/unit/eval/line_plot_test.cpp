@@ -9,6 +9,7 @@
 #include "core/common/error.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/line_series_csv.hpp"
+#include "tests/support/image_checks.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -97,17 +98,6 @@ TEST(LinePlot, DrawsEverySeriesInItsColourOnALogAxis) {
 }
 
 // True if the outermost pixels are all white: nothing drawn runs off the picture.
-bool borderIsWhite(const cv::Mat& image, int margin = 3) {
-  for (int y = 0; y < image.rows; ++y) {
-    for (int x = 0; x < image.cols; ++x) {
-      const bool border =
-          x < margin || y < margin || x >= image.cols - margin || y >= image.rows - margin;
-      if (border && image.at<cv::Vec3b>(y, x) != cv::Vec3b(255, 255, 255)) return false;
-    }
-  }
-  return true;
-}
-
 TEST(LinePlot, ALongTitleWidensThePictureInsteadOfRunningOffIt) {
   const std::string title(120, 'W');
   const auto image = plotLines({{"a", {{1, 0.3}, {5, 0.25}}}}, {title, "x", "y", true});

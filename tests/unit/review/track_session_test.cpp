@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/video/video_writer.hpp"
 #include "tests/support/test_support.hpp"
 #include "tests/support/tiny_model.hpp"
@@ -23,7 +24,6 @@ namespace {
 
 constexpr int kFrames = 8;
 constexpr double kFps = 25.0;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 std::filesystem::path writeVideo(const test::TempDir& dir) {
   const auto path = dir / "clip.avi";

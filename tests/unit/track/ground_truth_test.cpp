@@ -11,13 +11,12 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 // A tracker output of 3 landmarks for frames 0, 1 and 3 of a 25 fps video.
 TrackTable sampleTrack() {

@@ -14,7 +14,7 @@ namespace clm3d {
 namespace {
 
 constexpr double kFps = 30.0;
-constexpr double kEyes = 60.0;  // pixels
+constexpr double kEyeDistance = 60.0;  // pixels
 
 SmoothingSettings on(double minCutoff, double beta) {
   SmoothingSettings settings;
@@ -34,7 +34,7 @@ double stillNoise(const SmoothingSettings& settings) {
   for (int f = 0; f < 300; ++f) {
     Eigen::Matrix2Xd points(2, 1);
     points << 100.0 + noise(random), 50.0;
-    smoother.filter(points, f / kFps, kEyes);
+    smoother.filter(points, f / kFps, kEyeDistance);
     if (f < 30) continue;  // settled
     sum += points(0, 0);
     squares += points(0, 0) * points(0, 0);
@@ -50,7 +50,7 @@ double rampLag(const SmoothingSettings& settings, double speed) {
   Eigen::Matrix2Xd points(2, 1);
   for (int f = 0; f <= 30; ++f) {
     points << 100.0 + speed * f, 50.0;
-    smoother.filter(points, f / kFps, kEyes);
+    smoother.filter(points, f / kFps, kEyeDistance);
   }
   return 100.0 + speed * 30 - points(0, 0);
 }
@@ -75,13 +75,13 @@ TEST(PointSmoother, FirstFrameNanPointsAndRestartsPassThrough) {
   Eigen::Matrix2Xd points(2, 2);
   points << 10.0, 20.0, 30.0, 40.0;
   const Eigen::Matrix2Xd first = points;
-  smoother.filter(points, 0.0, kEyes);
+  smoother.filter(points, 0.0, kEyeDistance);
   EXPECT_EQ(points, first);
   EXPECT_TRUE(smoother.hasHistory());
 
   Eigen::Matrix2Xd moved(2, 2);
   moved << 20.0, std::nan(""), 30.0, std::nan("");
-  smoother.filter(moved, 1.0 / kFps, kEyes);
+  smoother.filter(moved, 1.0 / kFps, kEyeDistance);
   EXPECT_GT(moved(0, 0), 10.0);  // filtered towards 20
   EXPECT_LT(moved(0, 0), 20.0);
   EXPECT_TRUE(std::isnan(moved(0, 1)));
@@ -89,7 +89,7 @@ TEST(PointSmoother, FirstFrameNanPointsAndRestartsPassThrough) {
   // The NaN point comes back: it starts afresh where it is.
   Eigen::Matrix2Xd back(2, 2);
   back << 20.0, 90.0, 30.0, 90.0;
-  smoother.filter(back, 2.0 / kFps, kEyes);
+  smoother.filter(back, 2.0 / kFps, kEyeDistance);
   EXPECT_EQ(back(0, 1), 90.0);
 
   smoother.restart();
@@ -97,14 +97,14 @@ TEST(PointSmoother, FirstFrameNanPointsAndRestartsPassThrough) {
   Eigen::Matrix2Xd jump(2, 2);
   jump << 200.0, 200.0, 200.0, 200.0;
   const Eigen::Matrix2Xd raw = jump;
-  smoother.filter(jump, 3.0 / kFps, kEyes);
+  smoother.filter(jump, 3.0 / kFps, kEyeDistance);
   EXPECT_EQ(jump, raw);
 
   // A timestamp that does not move on is a restart too, not a division by zero.
   Eigen::Matrix2Xd same = raw;
   same.array() += 5.0;
   const Eigen::Matrix2Xd sameRaw = same;
-  smoother.filter(same, 3.0 / kFps, kEyes);
+  smoother.filter(same, 3.0 / kFps, kEyeDistance);
   EXPECT_EQ(same, sameRaw);
 }
 

@@ -8,12 +8,11 @@
 #include <limits>
 
 #include "core/common/error.hpp"
+#include "core/common/number_text.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 TrackTable sampleTable() {
   TrackTable table;

@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const SynthHead& head() {
+const SynthHead& photoHead() {
   static const SynthHead h = generateHead(1, {}, SynthOptions{1.5, 512});
   return h;
 }
@@ -37,7 +37,7 @@ const SynthHead& otherHead() {
   return h;
 }
 
-TrainSettings settings() {
+TrainSettings photoSettings() {
   TrainSettings s;
   s.yawsDeg = {-30, 0, 30};
   s.pitchesDeg = {0};
@@ -56,11 +56,11 @@ TrainSettings settings() {
 // NAME.pts; the face's eye distance is about 90 pixels in a 400 x 400 photo.
 void writePhoto(const fs::path& dir, const std::string& name, double yawDeg, double rollDeg) {
   const Camera camera = Camera::fromVerticalFov(400, 400, 40.0);
-  const Eigen::Matrix3Xd truth = head().landmarks.matrix();
+  const Eigen::Matrix3Xd truth = photoHead().landmarks.matrix();
   const double iodMm = (truth.col(7) - truth.col(10)).norm();
   const Pose pose =
       Pose::fromDegrees(0.0, yawDeg, rollDeg, {5.0, 3.0, -camera.focalY() * iodMm / 90.0});
-  OffscreenRenderer renderer(head().mesh);
+  OffscreenRenderer renderer(photoHead().mesh);
   const RenderResult render = renderer.render(pose, camera);
   cv::Mat photo(render.bgra.rows, render.bgra.cols, CV_8UC3);
   for (int y = 0; y < photo.rows; ++y) {
@@ -106,10 +106,10 @@ TEST(PhotoTraining, ManifestListsThePhotosWithTrustedPoints) {
 TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
   PhotoFixture fixture;
   const std::vector<TrainingPhoto> photos = loadTrainingPhotos(loadManifest(fixture.manifest));
-  const TrainSettings s = settings();
+  const TrainSettings s = photoSettings();
   TrainingInput input;
   input.schemeJson = schemeJsonFor("thesis25");
-  input.subjects.push_back({"head1", &head().mesh, &head().landmarks});
+  input.subjects.push_back({"head1", &photoHead().mesh, &photoHead().landmarks});
   input.subjects.push_back({"head2", &otherHead().mesh, &otherHead().landmarks});
   const ClmModel shapeOnly = trainModel(input, s);  // for its shape model
   std::vector<PhotoPlacement> placements;
@@ -132,9 +132,9 @@ TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
   SampleSpec spec;
   spec.yawDeg = placements[1].yawDeg;
   spec.pitchDeg = placements[1].pitchDeg;
-  OffscreenRenderer renderer(head().mesh, RenderOptions{1});
+  OffscreenRenderer renderer(photoHead().mesh, RenderOptions{1});
   const SamplePatches render =
-      renderSample(renderer, head().landmarks, {7, 10}, spec, TrainSettings(s));
+      renderSample(renderer, photoHead().landmarks, {7, 10}, spec, TrainSettings(s));
   const SamplePatches& photo = samples[2].patches;
   int matching = 0;
   for (const int landmark : {0, 7, 8, 9, 10, 11, 14, 15}) {
@@ -161,7 +161,7 @@ TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
 
 TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
   PhotoFixture fixture;
-  TrainSettings s = settings();
+  TrainSettings s = photoSettings();
   const ClmModel model = trainFromManifest(fixture.manifest, s, "test");
   EXPECT_NE(model.provenance.notes.find("3 photo samples from 2 annotated photos"),
             std::string::npos)
@@ -215,13 +215,13 @@ TEST(PhotoTraining, BadPhotoSourcesNameTheFile) {
 // With hidden-point removal off (hidden share 1) a view keeps landmarks hidden in all of its
 // renders; their experts learn from where the points project, so every kept landmark has one.
 TEST(ExpertTrainingInModels, HiddenShareOneGivesEveryKeptLandmarkAnExpert) {
-  TrainSettings s = settings();
+  TrainSettings s = photoSettings();
   s.yawsDeg = {-60};
   s.scales = 1;
   s.hiddenShare = 1.0;
   TrainingInput input;
   input.schemeJson = schemeJsonFor("thesis25");
-  input.subjects.push_back({"head1", &head().mesh, &head().landmarks});
+  input.subjects.push_back({"head1", &photoHead().mesh, &photoHead().landmarks});
   input.subjects.push_back({"head2", &otherHead().mesh, &otherHead().landmarks});
   const ClmModel model = trainModel(input, s);
   const PatchModel& patches = model.views.front().scales.front();

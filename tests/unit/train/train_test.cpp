@@ -37,7 +37,7 @@ const Heads& smallHeads() {
   return heads;
 }
 
-TrainSettings smallSettings() {
+TrainSettings smallTrainSettings() {
   TrainSettings settings;
   settings.yawsDeg = {-60, 0, 60};
   settings.pitchesDeg = {0};
@@ -67,7 +67,7 @@ double ncc(const Eigen::VectorXf& a, const Eigen::VectorXf& b) {
 }
 
 TEST(Train, ModelIsValidAndSavesAndLoads) {
-  const ClmModel model = trainModel(smallInput(), smallSettings());
+  const ClmModel model = trainModel(smallInput(), smallTrainSettings());
   ASSERT_EQ(model.views.size(), 3u);
   EXPECT_TRUE(model.views[2].mirrored);
   EXPECT_FALSE(model.views[0].mirrored);
@@ -83,7 +83,7 @@ TEST(Train, ModelIsValidAndSavesAndLoads) {
 }
 
 TEST(Train, PatchReconstructsFromItsOwnPcaWithAllModes) {
-  TrainSettings settings = smallSettings();
+  TrainSettings settings = smallTrainSettings();
   settings.textureVariance = 1.0;
   const ClmModel model = trainModel(smallInput(), settings);
   const PatchModel& patches = model.views[1].scales[0];
@@ -99,7 +99,7 @@ TEST(Train, PatchReconstructsFromItsOwnPcaWithAllModes) {
 }
 
 TEST(Train, HiddenLandmarksAtKnownPoses) {
-  const ClmModel model = trainModel(smallInput(), smallSettings());
+  const ClmModel model = trainModel(smallInput(), smallTrainSettings());
   // Frontal: the procedural head shows all 25 points (its earlobes too).
   const ViewModel& frontal = model.views[1];
   for (int i = 0; i < 25; ++i) {
@@ -123,7 +123,7 @@ TEST(Train, HiddenLandmarksAtKnownPoses) {
 }
 
 TEST(Train, MirroredViewMatchesTheDirectlyTrainedView) {
-  TrainSettings settings = smallSettings();
+  TrainSettings settings = smallTrainSettings();
   // Few renders each: keep them near the view centre, or the two trainings' random poses (not the
   // mirroring) would set how far their mean patches differ.
   settings.perturbation.viewCoverage = 0.0;
@@ -160,7 +160,7 @@ TEST(Train, MirroredViewMatchesTheDirectlyTrainedView) {
 }
 
 TEST(Train, DeterministicWhateverTheThreadCount) {
-  TrainSettings settings = smallSettings();
+  TrainSettings settings = smallTrainSettings();
   settings.threads = 1;
   ClmModel one = trainModel(smallInput(), settings);
   settings.threads = 2;
@@ -176,12 +176,12 @@ TEST(Train, CancelFromTheProgressCallbackStopsTraining) {
     ++calls;
     if (fraction > 0.2) token.cancel();
   };
-  EXPECT_THROW(trainModel(smallInput(), smallSettings(), progress, &token), Cancelled);
+  EXPECT_THROW(trainModel(smallInput(), smallTrainSettings(), progress, &token), Cancelled);
   EXPECT_GT(calls.load(), 0);
 }
 
 TEST(Train, SingleViewBaselineHasOneFrontalViewAnd2DShape) {
-  TrainSettings settings = smallSettings();
+  TrainSettings settings = smallTrainSettings();
   settings.singleView = true;
   TrainingInput input = smallInput();
   const ClmModel model = trainModel(input, settings);
@@ -192,16 +192,16 @@ TEST(Train, SingleViewBaselineHasOneFrontalViewAnd2DShape) {
 }
 
 TEST(Train, RejectsBadSettingsAndSubjects) {
-  TrainSettings settings = smallSettings();
+  TrainSettings settings = smallTrainSettings();
   settings.patchSize = 2;
   EXPECT_THROW(trainModel(smallInput(), settings), InputError);
   TrainingInput input = smallInput();
   input.subjects.clear();
-  EXPECT_THROW(trainModel(input, smallSettings()), Error);
+  EXPECT_THROW(trainModel(input, smallTrainSettings()), Error);
 }
 
 TEST(Train, ReportWritesThePictures) {
-  const ClmModel model = trainModel(smallInput(), smallSettings());
+  const ClmModel model = trainModel(smallInput(), smallTrainSettings());
   test::TempDir dir;
   const auto files = writeTrainingReport(model, dir.path());
   EXPECT_EQ(files.size(), 2u * 2u + 2u);
