@@ -28,6 +28,20 @@ endif()
 option(CLM3D_PCH "Precompile heavy third-party headers (default: on for Debug builds without a compiler launcher such as ccache)"
        ${clm3d_pch_default})
 
+# Unity builds (CMake's UNITY_BUILD): the files of a target compiled a batch at a time, so the heavy
+# headers are parsed and their inline functions compiled once per batch instead of once per file.
+# On by default where there is no compiler launcher: a clean build (CI's) is then far faster, and a
+# ccache build, whose rebuilds are cheap anyway, keeps one object per file. Every file must then
+# compile beside the others of its target: helpers in anonymous namespaces need distinct names.
+if(CMAKE_CXX_COMPILER_LAUNCHER OR CLM3D_FUZZ)
+  set(clm3d_unity_default OFF)
+else()
+  set(clm3d_unity_default ON)
+endif()
+option(CLM3D_UNITY "Compile each target's files in batches (default: on without a compiler launcher such as ccache)"
+       ${clm3d_unity_default})
+set(CLM3D_UNITY_BATCH 16 CACHE STRING "Files per unity batch")
+
 find_program(CLM3D_LLD ld.lld)
 if(CLM3D_LLD)
   set(clm3d_linker_default lld)
@@ -114,6 +128,16 @@ function(clm3d_speed_up_build)
       set(group app)
     elseif(type STREQUAL "STATIC_LIBRARY" AND NOT automoc AND target MATCHES "^clm3d_")
       set(group core)
+    endif()
+    # The GUI tests are one file each (with its moc output included): nothing to batch.
+    if(CLM3D_UNITY AND target MATCHES "^clm3d" AND NOT target MATCHES "^clm3d_gui_")
+      set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+                                                 UNITY_BUILD_BATCH_SIZE ${CLM3D_UNITY_BATCH})
+      # gcc takes a batch's included .cpp files for headers and warns of every class there that
+      # holds a type from an anonymous namespace; in a .cpp file that is intended.
+      if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+        target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+      endif()
     endif()
     if(NOT CLM3D_PCH OR NOT group)
       continue()
