@@ -172,6 +172,7 @@ struct FaceDetector::Impl {
   cv::CascadeClassifier profile;
   // Loaded for DlibHog, and for Cascade with dlibFallback or dlibAgreement when the build has dlib.
   std::unique_ptr<detail::DlibHogDetector> hog;
+  int profileRegions = 0;  // of the last detect()
 
   // Runs `cascade` over `region` of `grey` (its mirror image when `mirror`) for boxes with sides
   // from minSide to maxSide (0: no limit) and appends them in `grey`'s pixels.
@@ -206,36 +207,57 @@ struct FaceDetector::Impl {
   }
 
   // The cascades' faces, ranked; with dlib, dlib's faces where they find none
-  // (dlibFallback), or their faces ranked by dlib's agreement (dlibAgreement).
+  // (dlibFallback), or their faces ranked by dlib's agreement (dlibAgreement). With agreement,
+  // dlib searches before the profile passes, and a frontal box that dlib's frontal filter also
+  // finds gets no profile pass around it: both detectors call that face frontal, and a profile
+  // box there could only replace the frontal start with a turned one.
   std::vector<FaceBox> detectCascade(const cv::Mat& grey, const FaceDetectorSettings& settings) {
     std::vector<FaceBox> boxes;
     runCascade(frontal, grey, cv::Rect(0, 0, grey.cols, grey.rows), settings.minFaceSize, 0,
                settings, false, false, boxes);
-    if (settings.profiles) runProfiles(grey, settings, boxes);
+    const bool agreement = hog && settings.dlibAgreement && !boxes.empty();
+    std::vector<FaceBox> hogBoxes;
+    if (agreement) {
+      hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
+                  settings.dlibThreshold, hogBoxes);
+    }
+    if (settings.profiles) {
+      std::vector<FaceBox> unconfirmed;
+      for (const FaceBox& box : boxes) {
+        const bool frontalForBoth =
+            agreement && std::any_of(hogBoxes.begin(), hogBoxes.end(), [&](const FaceBox& h) {
+              return !h.profile && boxIou(box.box, h.box) > settings.overlapIou;
+            });
+        if (!frontalForBoth) unconfirmed.push_back(box);
+      }
+      runProfiles(grey, settings, boxes.empty(), unconfirmed, boxes);
+    }
     boxes = rankAndSuppress(std::move(boxes), settings.overlapIou, settings.frontalPreference);
     if (!hog) return boxes;
-    std::vector<FaceBox> hogBoxes;
     if (boxes.empty() && settings.dlibFallback) {
       hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, hogBoxes);
       return rankAndSuppress(std::move(hogBoxes), settings.overlapIou, 1.0);
     }
     if (boxes.empty() || !settings.dlibAgreement) return boxes;
-    hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
-                settings.dlibThreshold, hogBoxes);
+    if (!agreement) {  // only the profile passes found faces
+      hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
+                  settings.dlibThreshold, hogBoxes);
+    }
     return rankByAgreement(boxes, std::move(hogBoxes), settings.overlapIou);
   }
 
-  // The profile passes (image and mirror) over the whole image, or around each frontal box.
-  void runProfiles(const cv::Mat& grey, const FaceDetectorSettings& settings,
-                   std::vector<FaceBox>& boxes) {
+  // The profile passes (image and mirror), appended to `boxes`: over the whole image when
+  // `wholeImage` or profilesEverywhere, else around each of `around`.
+  void runProfiles(const cv::Mat& grey, const FaceDetectorSettings& settings, bool wholeImage,
+                   const std::vector<FaceBox>& around, std::vector<FaceBox>& boxes) {
     const cv::Rect whole(0, 0, grey.cols, grey.rows);
     std::vector<cv::Rect> regions;
     std::vector<cv::Size> sides;  // min, max side per region
-    if (settings.profilesEverywhere || boxes.empty()) {
+    if (settings.profilesEverywhere || wholeImage) {
       regions.push_back(whole);
       sides.emplace_back(settings.minFaceSize, 0);
     } else {
-      for (const FaceBox& face : boxes) {
+      for (const FaceBox& face : around) {
         const double side = std::max(face.box.width, face.box.height);
         const double margin = FaceDetectorSettings::kProfileMargin * side;
         const cv::Rect grown(static_cast<int>(std::floor(face.box.x - margin)),
@@ -247,6 +269,7 @@ struct FaceDetector::Impl {
                            static_cast<int>(std::ceil(side * 2)));
       }
     }
+    profileRegions = static_cast<int>(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
       for (const bool mirror : {false, true}) {
         runCascade(profile, grey, regions[r], sides[r].width, sides[r].height, settings, true,
@@ -281,7 +304,12 @@ bool FaceDetector::available(DetectorKind kind) {
   return kind != DetectorKind::DlibHog || detail::dlibAvailable();
 }
 
+int FaceDetector::profileRegionsSearched() const {
+  return impl_->profileRegions;
+}
+
 std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
+  impl_->profileRegions = 0;
   cv::Mat grey = toGrey(bgrOrGrey);
   // Large images are searched at a reduced size; boxes come back in input pixels.
   FaceDetectorSettings settings = settings_;

@@ -45,8 +45,9 @@ struct FaceDetectorSettings {
   // frontal cascade found nothing, else around each frontal box (the box grown by
   // kProfileMargin of its side each way, boxes from half to twice its side): a head turned
   // 30-60 degrees that the frontal cascade also finds still gets its profile box, and the whole
-  // detector costs a third of what it did on photos. true: over the whole image always (also
-  // finds a head turned too far for the frontal cascade beside a face it finds).
+  // detector costs a third of what it did on photos; with dlibAgreement, not around a frontal box
+  // that dlib's frontal filter also finds. true: over the whole image always (also finds a head
+  // turned too far for the frontal cascade beside a face it finds).
   bool profilesEverywhere = false;
   bool equalise = true;  // histogram equalisation of the grey image before detecting
   // > 0: images whose larger side exceeds this are searched reduced to it (faster on large
@@ -99,6 +100,11 @@ class FaceDetector {
 
   DetectorKind kind() const { return kind_; }
   const FaceDetectorSettings& settings() const { return settings_; }
+
+  // How many regions the last detect() ran the profile passes over (the whole image counts as
+  // one): 0 where every frontal box was one that dlib's frontal filter also found, or the profile
+  // passes are off. What that call paid for them, for measurements and tests.
+  int profileRegionsSearched() const;
 
  private:
   struct Impl;

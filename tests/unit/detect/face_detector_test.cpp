@@ -179,6 +179,26 @@ TEST(FaceDetector, ProfilePassesSearchAroundEachFrontalFace) {
   }
 }
 
+TEST(FaceDetector, AFaceBothDetectorsCallFrontalGetsNoProfilePass) {
+  if (!FaceDetector::available(DetectorKind::DlibHog)) GTEST_SKIP() << "built without dlib";
+  const test::Scene frontal = heldOutScene(0.0);
+  const cv::Point2d eyes(frontal.eyeMid.x(), frontal.eyeMid.y());
+  std::vector<FaceBox> firsts;
+  for (const bool agreement : {true, false}) {
+    FaceDetectorSettings settings;
+    settings.dlibAgreement = agreement;
+    FaceDetector detector(DetectorKind::Cascade, settings);
+    const std::vector<FaceBox> faces = detector.detect(frontal.bgr);
+    ASSERT_FALSE(faces.empty()) << "agreement " << agreement;
+    EXPECT_TRUE(faces.front().box.contains(eyes)) << "agreement " << agreement;
+    EXPECT_FALSE(faces.front().profile) << "agreement " << agreement;
+    // Without dlib's word the profile passes search around the frontal box.
+    EXPECT_EQ(detector.profileRegionsSearched(), agreement ? 0 : 1);
+    firsts.push_back(faces.front());
+  }
+  EXPECT_EQ(firsts[0].box, firsts[1].box);  // the same frontal box either way
+}
+
 TEST(FaceDetector, DlibFindsARenderedHeadWhenBuiltWithDlib) {
   if (!FaceDetector::available(DetectorKind::DlibHog)) {
     try {
