@@ -1,6 +1,6 @@
 // Numbers as text the same on every machine: std::to_chars, never the C locale, which a Qt
-// application or a user's LC_NUMERIC may change. Every writer of reports, CSV cells and messages
-// uses these, so a value prints alike wherever it appears. Header-only.
+// application or a user's LC_NUMERIC may change. For reports, plot labels and messages; CSV cells
+// use fixedCell (core/common/csv_cell.hpp), which builds on these. Header-only.
 #pragma once
 
 #include <charconv>

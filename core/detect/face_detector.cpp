@@ -215,9 +215,9 @@ struct FaceDetector::Impl {
     std::vector<FaceBox> boxes;
     runCascade(frontal, grey, cv::Rect(0, 0, grey.cols, grey.rows), settings.minFaceSize, 0,
                settings, false, false, boxes);
-    const bool agreement = hog && settings.dlibAgreement && !boxes.empty();
+    const bool dlibSearched = hog && settings.dlibAgreement && !boxes.empty();
     std::vector<FaceBox> hogBoxes;
-    if (agreement) {
+    if (dlibSearched) {
       hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
                   settings.dlibThreshold, hogBoxes);
     }
@@ -225,7 +225,7 @@ struct FaceDetector::Impl {
       std::vector<FaceBox> unconfirmed;
       for (const FaceBox& box : boxes) {
         const bool frontalForBoth =
-            agreement && std::any_of(hogBoxes.begin(), hogBoxes.end(), [&](const FaceBox& h) {
+            dlibSearched && std::any_of(hogBoxes.begin(), hogBoxes.end(), [&](const FaceBox& h) {
               return !h.profile && boxIou(box.box, h.box) > settings.overlapIou;
             });
         if (!frontalForBoth) unconfirmed.push_back(box);
@@ -239,7 +239,7 @@ struct FaceDetector::Impl {
       return rankAndSuppress(std::move(hogBoxes), settings.overlapIou, 1.0);
     }
     if (boxes.empty() || !settings.dlibAgreement) return boxes;
-    if (!agreement) {  // only the profile passes found faces
+    if (!dlibSearched) {  // only the profile passes found faces
       hog->detect(grey, std::max(settings.minFaceSize, detail::kDlibSmallestUnenlarged),
                   settings.dlibThreshold, hogBoxes);
     }

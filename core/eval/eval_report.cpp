@@ -7,8 +7,8 @@
 #include <system_error>
 
 #include "core/common/atomic_file.hpp"
+#include "core/common/csv_cell.hpp"
 #include "core/common/error.hpp"
-#include "core/common/number_text.hpp"
 #include "core/scheme/text_scan.hpp"
 
 namespace clm3d {
@@ -143,11 +143,11 @@ json comparisonJson(const EvaluationReport& report) {
 }  // namespace
 
 std::string formatErrorValue(double v) {
-  return std::isfinite(v) ? fixedText(v, 4) : std::string("n/a");
+  return fixedText(v, 4, "n/a");
 }
 
 std::string formatFrames(double frames) {
-  return std::isfinite(frames) ? fixedText(frames, 2) : std::string("n/a");
+  return fixedText(frames, 2, "n/a");
 }
 
 std::string formatShare(double share) {
@@ -428,7 +428,7 @@ std::string formatBucketsCsv(const EvaluationReport& report) {
     for (const auto& region : report.sequences[0].summary.regions) out += "," + region.name;
   }
   out += "\n";
-  const auto cell = [](double v) { return std::isfinite(v) ? fixedText(v, 6) : std::string(); };
+  const auto cell = [](double v) { return fixedCell(v, 6); };
   for (std::size_t p = 0; p < b.buckets.size(); ++p) {
     std::string label = report.sequences.at(p).label;
     std::replace_if(
