@@ -93,8 +93,8 @@ for img in "$TEST"/*.jpg; do
     "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --frames "$FRAMES" --seed "$n" \
       --out "$seq" > /dev/null 2>&1
   [[ -f $OUT/tracks/$stem.csv ]] ||
-    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" \
-      --optimiser rlms --min-expert-confidence 0.45 --quiet > "$OUT/logs/track-$stem.log" 2>&1
+    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
+      > "$OUT/logs/track-$stem.log" 2>&1
 done
 for tracks in "$OUT"/tracks/image_*.csv; do
   stem=$(basename "${tracks%.csv}")
@@ -107,8 +107,8 @@ done
 FRANCK=$DATA/videos/franck.mp4
 if [[ -f $FRANCK ]]; then
   [[ -f $OUT/tracks/franck.csv ]] ||
-    "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" \
-      --optimiser rlms --quiet > "$OUT/logs/track-franck.log" 2>&1 || true
+    "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" --quiet \
+      > "$OUT/logs/track-franck.log" 2>&1 || true
   mkdir -p "$OUT/franck"
   [[ -d $OUT/franck/frames ]] ||
     "$CLM3D" frames --video "$FRANCK" --out "$OUT/franck/frames" --every 10 --quiet > /dev/null

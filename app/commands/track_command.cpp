@@ -18,6 +18,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
+#include "core/fit/optimiser.hpp"
 #include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/fit_overlay.hpp"
@@ -101,7 +102,7 @@ void runTrack(const TrackArgs& args) {
             << "%), " << summary.detections << " detections\n"
             << std::setprecision(2) << "fit time per frame: median " << summary.medianMilliseconds()
             << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
-            << settings.fit.optimiser << ", "
+            << resolveOptimiser(settings.fit.optimiser, model) << ", "
             << (settings.fit.scales > 0 ? std::to_string(settings.fit.scales) : std::string("all"))
             << " scales)\n"
             << "tracks: " << args.out.string() << '\n';

@@ -50,6 +50,7 @@ Fitter::Fitter(const ClmModel& model, const Camera& camera, const FitSettings& s
       problem_(model.shape, camera) {
   if (model.views.empty()) throw InputError("fit: the model has no views");
   settings_.validate(model);
+  settings_.optimiser = resolveOptimiser(settings_.optimiser, model);
   scales_ = settings_.scales > 0 ? settings_.scales : modelScales(model);
   optimiser_ = makeOptimiser(settings_.optimiser, settings_.optimiserSettings);
   if (optimiser_->usesExperts()) {

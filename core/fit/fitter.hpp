@@ -24,7 +24,7 @@
 namespace clm3d {
 
 struct FitSettings {
-  std::string optimiser = "fastncc";
+  std::string optimiser{kAutoOptimiser};  // a name of optimiserChoices(); the Fitter resolves it
   OptimiserSettings optimiserSettings;
   int scales = 0;                // pyramid scales searched, finest n; 0 = all of the model's
   int maxIterations = 4;         // per scale (the thesis used at most 4)

@@ -49,4 +49,15 @@ std::unique_ptr<Optimiser> makeOptimiser(std::string_view name,
                                          const OptimiserSettings& settings = {});
 const std::vector<std::string>& optimiserNames();
 
+struct ClmModel;
+// The name that chooses by the model (the default of fit and track): rlms for a model whose
+// point refiner carries a check and whose views all have patch experts (a model trained with
+// annotated photos, where rlms with the refiner was measured best on real faces:
+// docs/real-faces.md), fastncc for the others (the thesis's models, trained on renders).
+inline constexpr std::string_view kAutoOptimiser = "auto";
+// `name`, or for kAutoOptimiser the optimiser it chooses for `model`.
+std::string resolveOptimiser(std::string_view name, const ClmModel& model);
+// kAutoOptimiser and then optimiserNames(): every name a user may give.
+const std::vector<std::string>& optimiserChoices();
+
 }  // namespace clm3d

@@ -4,6 +4,7 @@
 #include "core/common/error.hpp"
 #include "core/fit/optimiser.hpp"
 #include "core/fit/optimiser_factories.hpp"
+#include "core/model/clm_model.hpp"
 
 namespace clm3d {
 namespace {
@@ -41,6 +42,24 @@ const std::vector<std::string>& optimiserNames() {
     return result;
   }();
   return names;
+}
+
+std::string resolveOptimiser(std::string_view name, const ClmModel& model) {
+  if (name != kAutoOptimiser) return std::string(name);
+  bool experts = !model.views.empty();
+  for (const ViewModel& view : model.views) {
+    for (const PatchModel& patches : view.scales) experts = experts && patches.hasExperts();
+  }
+  return experts && !model.refiner.check.empty() ? "rlms" : "fastncc";
+}
+
+const std::vector<std::string>& optimiserChoices() {
+  static const std::vector<std::string> choices = [] {
+    std::vector<std::string> result{std::string(kAutoOptimiser)};
+    for (const auto& entry : registry()) result.push_back(entry.first);
+    return result;
+  }();
+  return choices;
 }
 
 }  // namespace clm3d

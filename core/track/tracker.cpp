@@ -42,8 +42,10 @@ std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& po
   return visibility;
 }
 
-double confidenceThreshold(const TrackerSettings& settings) {
-  return makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()
+double confidenceThreshold(const TrackerSettings& settings, const ClmModel& model) {
+  return makeOptimiser(resolveOptimiser(settings.fit.optimiser, model),
+                       settings.fit.optimiserSettings)
+                 ->usesExperts()
              ? settings.minExpertConfidence
              : settings.minConfidence;
 }
@@ -53,10 +55,11 @@ Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSetti
       camera_(camera),
       settings_(settings),
       fitter_(model, camera, settings.fit),
-      usesExperts_(
-          makeOptimiser(settings.fit.optimiser, settings.fit.optimiserSettings)->usesExperts()),
+      usesExperts_(makeOptimiser(fitter_.settings().optimiser)->usesExperts()),
       smoother_(settings.smoothing),
-      eyes_(model.scheme().normalisationPair()) {}
+      eyes_(model.scheme().normalisationPair()) {
+  settings_.fit.optimiser = fitter_.settings().optimiser;  // "auto" resolved for this model
+}
 
 double Tracker::minConfidence() const {
   return usesExperts_ ? settings_.minExpertConfidence : settings_.minConfidence;

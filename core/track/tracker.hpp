@@ -93,10 +93,10 @@ struct TrackerSettings {
 // lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
 std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
 
-// The confidence below which a frame fails under `settings`: minExpertConfidence when its
-// optimiser matches patch experts (rlms), minConfidence otherwise. The same scale as each
-// landmark's confidence, so the studio marks landmarks below it.
-double confidenceThreshold(const TrackerSettings& settings);
+// The confidence below which a frame fails under `settings` with `model`: minExpertConfidence
+// when its optimiser (resolved for the model) matches patch experts (rlms), minConfidence
+// otherwise. The same scale as each landmark's confidence, so the studio marks landmarks below it.
+double confidenceThreshold(const TrackerSettings& settings, const ClmModel& model);
 
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };

@@ -82,7 +82,9 @@ std::vector<TrackerOption> buildOptions() {
   std::string names;
   for (const std::string& name : optimiserNames()) names += (names.empty() ? "" : ", ") + name;
   options.push_back(choice(
-      "optimiser", "Optimiser", "Search", search, optimiserNames(), "search optimiser: " + names,
+      "optimiser", "Optimiser", "Search", search, optimiserChoices(),
+      "search optimiser: " + names + ", or auto (rlms for a model trained with photos, whose " +
+          "point refiner has a check; fastncc for the others)",
       [](const S& s) { return s.fit.optimiser; },
       [](S& s, const std::string& value) { s.fit.optimiser = value; }));
   options.push_back(integer("scales", "Pyramid scales", "Search", search, 0, 8,

@@ -202,4 +202,14 @@ inline double meanPointError(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& 
   return count > 0 ? sum / count : 0.0;
 }
 
+// Gives `model` a point refiner with a check, as a model trained with photos has (one stage over
+// three landmarks; its values are not meant to refine anything): what the "auto" optimiser looks
+// for.
+inline void giveCheckedRefiner(ClmModel& model) {
+  model.refiner.landmarks = {0, 1, 2};
+  model.refiner.meanShape = Eigen::Matrix2Xd::Zero(2, 3);
+  model.refiner.stages.resize(1);
+  model.refiner.check.weights = Eigen::VectorXf::Ones(4);
+}
+
 }  // namespace clm3d::test

@@ -691,7 +691,9 @@ void TrackPage::showFrame() {
   // frame threshold of the settings the page tracks with.
   frameView_->setLandmarks(
       points, colours,
-      landmarkMarks(session_.trackRow(current_), points, confidenceThreshold(trackerSettings_)));
+      landmarkMarks(session_.trackRow(current_), points,
+                    session_.model() ? confidenceThreshold(trackerSettings_, *session_.model())
+                                     : trackerSettings_.minConfidence));
 
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];

@@ -174,7 +174,8 @@ class TrackPageTest : public QObject {
   // The frame view draws what the tracker wrote per landmark: visible_k = 0 hollow, conf_k below
   // the tracker's threshold ringed (landmark_marks_test checks the drawing itself).
   void theFrameViewMarksWhatTheTrackerWrote() {
-    const double threshold = confidenceThreshold(page_->trackerSettings());
+    const double threshold =
+        confidenceThreshold(page_->trackerSettings(), *page_->session().model());
     int hidden = 0;
     for (int f = 0; f < kFrames; ++f) {
       page_->setCurrentFrame(f);

@@ -129,6 +129,8 @@ TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   const auto trackOnce = [&](bool refine) {
     TrackerSettings settings;
     settings.refine = refine;
+    // The unrefined row is judged on the search's own confidence: NCC's, which this render passes.
+    settings.fit.optimiser = "fastncc";
     Tracker tracker(model, scene.camera, settings);
     tracker.setState(scene.truth, -1);
     return tracker.track(scene.image, 0, 0.0);
@@ -198,7 +200,7 @@ TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   const auto twoFrames = [&](double minConfidence) {
     TrackerSettings settings;
-    settings.minConfidence = minConfidence;  // the default optimiser's (NCC) threshold
+    settings.minConfidence = minConfidence;  // the search's threshold on either scale
     settings.minExpertConfidence = minConfidence;
     Tracker tracker(model, scene.camera, settings);
     tracker.setState(scene.truth, -1);

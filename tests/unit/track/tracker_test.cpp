@@ -217,6 +217,23 @@ TEST(Tracker, TemplateOptimisersKeepTheNccThresholds) {
   EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchConfidence);
 }
 
+// The default optimiser, "auto", is resolved for the model: a model trained with photos (experts
+// and a checked point refiner) is tracked with rlms on the experts' thresholds, others with
+// fastncc.
+TEST(Tracker, TheAutoOptimiserIsResolvedForTheModel) {
+  ClmModel checked = test::fitTestModel();
+  test::giveCheckedRefiner(checked);
+  const test::FitScene scene = test::makeFitScene(checked, 0.0, 0.0);
+  const TrackerSettings settings;
+  const Tracker tracker(checked, scene.camera, settings);
+  EXPECT_EQ(tracker.settings().fit.optimiser, "rlms");
+  EXPECT_TRUE(tracker.usesExperts());
+  EXPECT_EQ(confidenceThreshold(settings, checked), settings.minExpertConfidence);
+  const Tracker plain(test::fitTestModel(), scene.camera, settings);
+  EXPECT_EQ(plain.settings().fit.optimiser, "fastncc");
+  EXPECT_EQ(confidenceThreshold(settings, test::fitTestModel()), settings.minConfidence);
+}
+
 // Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
 // view's visibility. Compared with the depth-tested truth of the renders over a turn to 40 degrees
 // (measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found).
