@@ -158,8 +158,19 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
     std::mt19937_64 random(settings.seed * 1000003u + p);
     const Eigen::Matrix2Xd& truth = photos[p].truth;
     const double eyeDistance = (truth.col(leftEye) - truth.col(rightEye)).norm();
-    for (int k = 0; k < perPhoto; ++k)
-      starts[p * perPhoto + k] = perturbedPoints(truth, eyeDistance, settings.start, random);
+    for (int k = 0; k < perPhoto; ++k) {
+      Eigen::Matrix2Xd shape = truth;
+      if (settings.otherShape > 0.0 && photos.size() > 1) {
+        std::uniform_int_distribution<std::size_t> pick(0, photos.size() - 2);
+        std::size_t q = pick(random);
+        q += q >= p ? 1 : 0;
+        const Eigen::Matrix2Xd& other = photos[q].truth;
+        const double share =
+            std::uniform_real_distribution<double>(0.0, settings.otherShape)(random);
+        shape += share * (alignSimilarity2(other, truth).apply(other) - truth);
+      }
+      starts[p * perPhoto + k] = perturbedPoints(shape, eyeDistance, settings.start, random);
+    }
   }
   std::vector<Similarity2> frames(static_cast<std::size_t>(m));
   for (double window : settings.windows) {

@@ -70,6 +70,10 @@ struct DescentTrainSettings {
   // Starts per photo: the true points moved as a search typically misplaces them.
   int startsPerPhoto = 10;
   StartPerturbation start;
+  // Each start's shape is the photo's own moved towards another photo's (aligned by a similarity)
+  // by a share drawn uniformly from [0, otherShape]: a search leaves the shape model's idea of the
+  // face, not only a misplaced copy of the true one. 0 = the true shape, moved only.
+  double otherShape = 0.0;
   std::uint64_t seed = 1;
   int threads = 0;
 };
