@@ -29,6 +29,7 @@ struct EvalArgs {
   fs::path plotDir;
   fs::path out;
   double threshold = 0.18;
+  double wrongAbove = 0.3;
   std::string bucketBy;
   bool bucketAbsolute = false;
   double bucketWidth = 0.0;
@@ -63,6 +64,7 @@ void runEval(const EvalArgs& args) {
   const Scheme scheme = Scheme::byNameOrPath(args.scheme);
   EvalOptions options;
   options.threshold = args.threshold;
+  options.wrongAbove = args.wrongAbove;
   const auto report =
       evaluateTrackFiles(args.truths, trackers, scheme, options, bucketed ? &buckets : nullptr);
 
@@ -117,6 +119,12 @@ void addEvalCommand(CLI::App& root) {
       ->add_option("--threshold", args->threshold,
                    "Error at which a point counts as found and a frame as converged")
       ->default_val(0.18)
+      ->check(CLI::Range(1e-6, 100.0));
+  command
+      ->add_option("--wrong-above", args->wrongAbove,
+                   "A frame reported as succeeded with an error above this counts as a wrong "
+                   "success (the tracker said tracked when the fit was off)")
+      ->default_val(0.3)
       ->check(CLI::Range(1e-6, 100.0));
   command->add_option("--bucket-by", args->bucketBy,
                       "Break the errors down by this ground-truth column (yaw, pitch, roll, "

@@ -49,6 +49,7 @@ json sequenceJson(const SequenceEvaluation& sequence) {
             {"normalised", s.normalisedFrames},
             {"predicted", s.predictedFrames},
             {"succeeded", s.succeededFrames},
+            {"succeeded_wrong", s.wrongSuccesses},
             {"scored", s.scoredFrames},
             {"converged", s.convergedFrames},
             {"extra_prediction_rows", s.extraPredictionRows}}},
@@ -296,6 +297,7 @@ std::string formatReportJson(const EvaluationReport& report) {
                    {"truth", report.truthSource},
                    {"metric", "thesis eq. 5.1: point distance / true inter-ocular distance"},
                    {"threshold", report.options.threshold},
+                   {"wrong_above", report.options.wrongAbove},
                    {"truths", report.truthSources},
                    {"predictions", predictions},
                    {"comparison", comparisonJson(report)}};
@@ -320,8 +322,9 @@ std::string formatReportText(const EvaluationReport& report) {
     out += "\n" + sequence.label + " (" + sequence.source + ")\n";
     out += "  frames: " + std::to_string(s.predictedFrames) + "/" +
            std::to_string(s.normalisedFrames) + " predicted, " + std::to_string(s.succeededFrames) +
-           " succeeded, " + std::to_string(s.scoredFrames) + " scored, " +
-           std::to_string(s.convergedFrames) + " converged";
+           " succeeded (" + std::to_string(s.wrongSuccesses) + " with an error above " +
+           fixedText(report.options.wrongAbove, 2) + "), " + std::to_string(s.scoredFrames) +
+           " scored, " + std::to_string(s.convergedFrames) + " converged";
     if (s.normalisedFrames != s.truthFrames) {
       out += " (" + std::to_string(s.truthFrames - s.normalisedFrames) +
              " truth frames without the normalisation pair skipped)";

@@ -115,6 +115,7 @@ ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme
     ++s.normalisedFrames;
     s.predictedFrames += frame.predicted ? 1 : 0;
     s.succeededFrames += frame.success ? 1 : 0;
+    s.wrongSuccesses += frame.success && frame.error > options.wrongAbove ? 1 : 0;
     s.convergedFrames += frame.converged ? 1 : 0;
     if (std::isfinite(frame.error)) {
       ++s.scoredFrames;

@@ -19,6 +19,9 @@ struct EvalOptions {
   // A point whose normalised error is at most this is "found"; a frame whose mean error is below
   // it (and whose prediction exists and succeeded) has converged. Thesis figure 5.12: 0.18.
   double threshold = 0.18;
+  // A frame reported as tracked (success) whose error exceeds this is a wrong success: the
+  // tracker said it had the face when the fit was off (issue 12's measure of failure detection).
+  double wrongAbove = 0.3;
   // The cumulative distributions are sampled at 0, cdfStep, ..., cdfMax.
   double cdfMax = 0.5;
   double cdfStep = 0.01;
@@ -72,6 +75,7 @@ struct ErrorSummary {
   int normalisedFrames = 0;  // of those, with a usable inter-ocular distance: the denominator
   int predictedFrames = 0;   // normalised frames the prediction has a row for
   int succeededFrames = 0;   // ... with success = 1
+  int wrongSuccesses = 0;    // ... of those, with an error above EvalOptions::wrongAbove
   int scoredFrames = 0;      // ... with at least one point in common (any success value)
   int convergedFrames = 0;
   int extraPredictionRows = 0;  // prediction rows for frames the truth does not have (ignored)

@@ -75,7 +75,8 @@ TEST(EvalPairsCli, PoolsSequencesPerTrackerAndBucketsByAbsoluteYaw) {
   expectIn(result.output,
            {"ground truth: " + s.truthA + ", " + s.truthB + " (60 frames in 2 sequences, pooled",
             "\nsteady (" + s.steadyA + ", " + s.steadyB + ")",
-            "frames: 60/60 predicted, 60 succeeded, 60 scored, 30 converged",
+            "frames: 60/60 predicted, 60 succeeded (0 with an error above 0.30), 60 scored, 30 "
+            "converged",
             "error: mean 0.1250, median 0.1250", "\nloose (" + s.looseA + ", " + s.looseB + ")",
             "error: mean 0.1000, median 0.1000", "Welch's t-test on frame errors, steady vs loose",
             "errors by |yaw| of the ground truth", "| prediction | figure | 0 to 15 | 15 to 30 |",
@@ -92,9 +93,9 @@ TEST(EvalPairsCli, PoolsSequencesPerTrackerAndBucketsByAbsoluteYaw) {
 
 TEST(EvalPairsCli, SignedEdgesAndJson) {
   Sequences s;
-  const auto result =
-      runClm3d("eval --truth " + s.truthA + " " + s.truthB + " --pred " + s.steadyA + " " +
-               s.steadyB + " --bucket-by yaw --bucket-edges -30,-15,0,15,30 --json");
+  const auto result = runClm3d(
+      "eval --truth " + s.truthA + " " + s.truthB + " --pred " + s.steadyA + " " + s.steadyB +
+      " --bucket-by yaw --bucket-edges -30,-15,0,15,30 --wrong-above 0.15 --json");
   ASSERT_EQ(result.exitCode, 0) << result.output;
   const auto json = nlohmann::json::parse(result.output);
   EXPECT_EQ(json["truths"].size(), 2u);
@@ -102,6 +103,9 @@ TEST(EvalPairsCli, SignedEdgesAndJson) {
   EXPECT_EQ(prediction["files"].size(), 2u);
   EXPECT_EQ(prediction["per_frame"].size(), 60u);
   EXPECT_EQ(prediction["per_frame"][59]["sequence"], 1);
+  // Every frame is reported tracked; the 30 at 0.2 are wrong successes above 0.15.
+  EXPECT_DOUBLE_EQ(json["wrong_above"].get<double>(), 0.15);
+  EXPECT_EQ(prediction["frames"]["succeeded_wrong"], 30);
   const auto& buckets = json["buckets"];
   EXPECT_EQ(buckets["column"], "yaw");
   EXPECT_FALSE(buckets["absolute"].get<bool>());

@@ -119,6 +119,30 @@ TEST(EvalLandmarkError, NormalisesByTheTrueNotThePredictedEyeDistance) {
   EXPECT_NEAR(frame.pointErrors[3], expected, 1e-12);
 }
 
+// A frame the tracker reported as tracked while its points were off is a wrong success; a frame
+// reported as failed is not, whatever its error.
+TEST(EvalLandmarkError, SucceededFramesAboveTheWrongLimitAreCounted) {
+  const auto truth = test::truthTable(10);
+  TrackTable prediction = truth;
+  const auto shift = [](TrackRow& row, double share) {
+    const double eyes = (row.points.col(7) - row.points.col(10)).norm();
+    row.points.row(0).array() += share * eyes;  // every point off by `share` of the eye distance
+  };
+  for (auto& row : prediction.rows) {
+    if (row.frame == 2) shift(row, 0.5);  // reported tracked, 0.5 off
+    if (row.frame == 3) {
+      shift(row, 0.5);  // 0.5 off, reported lost
+      row.success = false;
+    }
+    if (row.frame == 4) shift(row, 0.2);  // tracked, 0.2 off
+  }
+  EXPECT_EQ(evaluateSequence(truth, prediction, Scheme::thesis25()).summary.wrongSuccesses, 1);
+  EvalOptions options;
+  options.wrongAbove = 0.1;
+  EXPECT_EQ(evaluateSequence(truth, prediction, Scheme::thesis25(), options).summary.wrongSuccesses,
+            2);
+}
+
 TEST(EvalLandmarkError, MissingAndFailedFramesCountAgainstConvergence) {
   const auto truth = test::truthTable(10);
   TrackTable prediction = truth;
