@@ -144,6 +144,12 @@ std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou)
   return rankAndSuppress(std::move(boxes), maxIou, 1.0);
 }
 
+std::vector<FaceBox> preferFacesAt(std::vector<FaceBox> faces, const cv::Point2d& point) {
+  std::stable_partition(faces.begin(), faces.end(),
+                        [&](const FaceBox& face) { return face.box.contains(point); });
+  return faces;
+}
+
 std::vector<FaceBox> rankByAgreement(const std::vector<FaceBox>& cascade, std::vector<FaceBox> hog,
                                      double maxIou) {
   hog = rankAndSuppress(std::move(hog), maxIou, 1.0);

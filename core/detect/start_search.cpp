@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/common/error.hpp"
+#include "core/detect/initialisation.hpp"
+
 namespace clm3d {
 
 FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState start,
@@ -53,6 +56,38 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
     if (again.confidence >= best.confidence) best = std::move(again);
   }
   if (searches != nullptr) *searches = count;
+  return best;
+}
+
+FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
+                          const std::vector<FaceBox>& faces, const FaceSearch& search, int* tried) {
+  if (faces.empty()) throw InputError("face search: no faces to search");
+  const std::size_t count =
+      std::min(faces.size(), static_cast<std::size_t>(std::max(1, search.maxFaces)));
+  FitResult best;
+  std::size_t bestFace = 0;
+  std::size_t face = 0;
+  while (face < count) {
+    FitState start = stateFromBox(model, fitter.camera(), faces[face]);
+    if (search.placed) start = search.placed(start);
+    FitResult fit =
+        fitFromBestStart(fitter, model, image, start, search.starts, nullptr, search.finish);
+    const bool done = !search.accepted || search.accepted(fit);
+    if (face == 0 || fit.confidence > best.confidence) {
+      best = std::move(fit);
+      bestFace = face;
+    }
+    ++face;
+    if (done) break;
+  }
+  if (bestFace + 1 != face) {
+    // The fitter keeps the last search's templates (the overlay draws them): search the kept face
+    // once more from its result, as fitFromBestStart does, and keep that unless it is worse.
+    FitResult again = fitter.fit(image, best.state);
+    if (search.finish) search.finish(again);
+    if (again.confidence >= best.confidence) best = std::move(again);
+  }
+  if (tried != nullptr) *tried = static_cast<int>(face);
   return best;
 }
 

@@ -8,7 +8,9 @@
 #include <Eigen/Core>
 #include <functional>
 #include <opencv2/core/mat.hpp>
+#include <vector>
 
+#include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
 #include "core/model/clm_model.hpp"
 
@@ -40,5 +42,22 @@ using FitFinisher = std::function<void(FitResult&)>;
 FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                            const FitState& start, const StartSearchSettings& settings,
                            int* searches = nullptr, const FitFinisher& finish = {});
+
+// A detected image's search over its faces: fitFromBestStart from stateFromBox of each face in
+// `faces` order (best first), `placed` applied to each start when given, until `accepted` says
+// yes to a fit or maxFaces faces are searched; returns the most confident fit (the first on ties)
+// and, in `tried`, the number of faces searched. A false detection ranked first then costs one
+// more search instead of the face. Throws InputError for an empty `faces` or a box stateFromBox
+// refuses.
+struct FaceSearch {
+  int maxFaces = 1;
+  StartSearchSettings starts;
+  std::function<bool(const FitResult&)> accepted;  // empty: the first face's fit is kept
+  std::function<FitState(const FitState&)> placed;
+  FitFinisher finish;
+};
+FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
+                          const std::vector<FaceBox>& faces, const FaceSearch& search,
+                          int* tried = nullptr);
 
 }  // namespace clm3d

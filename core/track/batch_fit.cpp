@@ -60,6 +60,8 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.startSearch = tracker.startSearch;
   settings.verticalFovDeg = verticalFovDeg;
   settings.refine = tracker.refine;
+  settings.facesTried = tracker.facesTried;
+  settings.minCheckProbability = tracker.minCheckProbability;
   return settings;
 }
 
@@ -123,26 +125,23 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     lastImage_ = cv::Mat();
     lastImage_ = readImage(image);
     Fitter& fitter = fitterFor(lastImage_);
-    FitState start;
-    if (!startPoints.empty()) {
-      start = stateFromPointsFile(*model_, fitter.camera(), startPoints);
-    } else {
+    std::vector<FaceBox> faces;
+    if (startPoints.empty()) {
       const auto begin = std::chrono::steady_clock::now();
-      try {
-        start = initialiseFromImage(*model_, fitter.camera(), lastImage_, detector());
-      } catch (const NoFaceFound&) {
+      faces = detector().detect(lastImage_);
+      outcome.detectMilliseconds = millisecondsSince(begin);
+      if (faces.empty()) {
         outcome.status = ImageFitStatus::NoFace;
         outcome.message = fileMessage(image, "no face found");
-        outcome.detectMilliseconds = millisecondsSince(begin);
         return outcome;
       }
-      outcome.detectMilliseconds = millisecondsSince(begin);
     }
-    if (settings_.startOffset > 0.0) {
-      start = offsetStart(
+    const auto placed = [&](FitState start) {
+      if (settings_.startOffset <= 0.0) return start;
+      return offsetStart(
           *model_, fitter, start, settings_.startOffset,
           mixKey(settings_.startOffsetSeed, std::hash<std::string>{}(image.stem().string())));
-    }
+    };
     const auto begin = std::chrono::steady_clock::now();
     FitFinisher finish;
     if (settings_.refine) {
@@ -150,10 +149,20 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     }
     FitResult fit;
     if (startPoints.empty()) {
-      fit = fitFromBestStart(fitter, *model_, lastImage_, start, settings_.startSearch, nullptr,
-                             finish);
+      FaceSearch search;
+      search.maxFaces = settings_.facesTried;
+      search.starts = settings_.startSearch;
+      // Only the check's probability tells a wrong fit on real faces (docs/real-faces.md).
+      search.accepted = [this](const FitResult& result) {
+        return std::isnan(result.searchConfidence) ||
+               result.confidence >= settings_.minCheckProbability;
+      };
+      search.placed = placed;
+      search.finish = finish;
+      fit = fitFromBestFace(fitter, *model_, lastImage_, faces, search);
     } else {
-      fit = fitter.fit(lastImage_, start);
+      fit = fitter.fit(lastImage_,
+                       placed(stateFromPointsFile(*model_, fitter.camera(), startPoints)));
       if (finish) finish(fit);
     }
     outcome.fitMilliseconds = millisecondsSince(begin);

@@ -44,6 +44,11 @@ struct ImageFitSettings {
   std::uint64_t startOffsetSeed = 1;
   // Apply the model's point refiner (ClmModel::refiner, when it has one) to the fitted points.
   bool refine = true;
+  // From the detector: while the check of the refined points (a model trained with photos) gives
+  // a probability below minCheckProbability, the next detected face is searched, up to facesTried
+  // faces, and the most confident fit kept (TrackerSettings::facesTried).
+  int facesTried = TrackerSettings{}.facesTried;
+  double minCheckProbability = TrackerSettings{}.minCheckProbability;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,

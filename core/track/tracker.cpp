@@ -72,8 +72,14 @@ double Tracker::viewSearchConfidence() const {
 Tracker::~Tracker() = default;
 
 void Tracker::reset() {
+  lose();
+  lastFace_.reset();
+}
+
+void Tracker::lose() {
   state_.reset();
   before_.reset();
+  doubted_.reset();
   view_ = -1;
   smoother_.restart();
 }
@@ -81,7 +87,9 @@ void Tracker::reset() {
 void Tracker::setState(const FitState& state, int view) {
   state_ = state;
   before_.reset();
+  doubted_.reset();
   view_ = view;
+  lastFace_.reset();
   smoother_.restart();
 }
 
@@ -223,14 +231,26 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     }
   }
   if (!fromPrevious || step.failure != TrackFailure::None) {
-    const std::vector<FaceBox> faces = detector().detect(frame);
+    const std::vector<FaceBox> faces =
+        lastFace_ ? preferFacesAt(detector().detect(frame), *lastFace_) : detector().detect(frame);
     if (!faces.empty()) {
       step.detected = true;
-      const FitState start = stateFromBox(*model_, camera_, faces.front());
-      attempt(start, -1, &settings_.startSearch);
+      // The next face while the fit fails (TrackerSettings::facesTried); the last one's stands.
+      const auto tried =
+          std::min(faces.size(), static_cast<std::size_t>(std::max(1, settings_.facesTried)));
+      for (std::size_t face = 0; face < tried; ++face) {
+        attempt(stateFromBox(*model_, camera_, faces[face]), -1, &settings_.startSearch);
+        if (step.failure == TrackFailure::None) break;
+      }
     } else if (!fromPrevious) {
       step.failure = TrackFailure::NoFace;
     }
+  }
+  // No detected face gave a fit that passes, after a frame tracked with a doubted search: search
+  // from that frame's state too (a rolled or zoomed face the detector misses is not dropped).
+  if (const auto doubted = std::exchange(doubted_, std::nullopt);
+      doubted && step.failure != TrackFailure::None) {
+    attempt(doubted->first, doubted->second);
   }
 
   step.fitMilliseconds = searchMs;
@@ -245,13 +265,14 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
       view_ = step.fit->view;
     } else {
       // Tracked (its refined points passed the check), but the next frame starts from the
-      // detector, not from this search's 3D state.
+      // detector, not from this search's 3D state, which stays the fallback.
       state_.reset();
       before_.reset();
       view_ = -1;
+      doubted_.emplace(step.fit->state, step.fit->view);
     }
   } else {
-    reset();
+    lose();
   }
   if (step.fit) {
     step.row.success = step.failure == TrackFailure::None;
@@ -261,6 +282,10 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     step.row.points = step.fit->points;
     step.row.visibility = landmarkVisibility(*model_, step.fit->state.pose);
     step.row.landmarkConfidence = step.fit->landmarkConfidence;
+    if (step.row.success) {
+      const Eigen::Vector2d centre = step.row.points.rowwise().mean();
+      lastFace_ = cv::Point2d(centre.x(), centre.y());
+    }
   }
   if (settings_.smoothing.enabled) {
     // A failure is never smoothed over: its points stay as fitted and the filter starts again,

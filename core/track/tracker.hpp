@@ -33,6 +33,13 @@ struct TrackerSettings {
   // rescaled starts did no better (docs/initialisation.md). Used by `clm3d fit` and by the tracker
   // on the frames it detects.
   StartSearchSettings startSearch{1, 0.10, {}};
+  // The detector's faces searched, best first, until one's fit does not fail: a false detection
+  // ranked first (a mouth, a pattern on a shirt) no longer costs the face beside it. On the LFPW
+  // test photos the two fits the check rejected were both such boxes (docs/real-faces.md). The
+  // tracker judges each fit as it judges a frame; `clm3d fit` tries the next face while the point
+  // refiner's check rejects the fit and keeps the most confident (without a check, whose
+  // confidence would tell a wrong fit, it searches the best face only). 1 = the best face only.
+  int facesTried = 3;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
   // a probability that the points are right. The tracker uses the one matching its optimiser.
@@ -117,7 +124,7 @@ class Tracker {
 
   // Tracks one frame (BGR or grey, the camera's size).
   TrackStep track(const cv::Mat& frame, int index, double timestamp);
-  // Forget the previous frame: the next frame starts from a detection.
+  // Forget the previous frames: the next frame starts from a detection of any face.
   void reset();
   // Start the next frame from this state (a hand-corrected frame, or --init points). Both restart
   // the smoother.
@@ -142,6 +149,7 @@ class Tracker {
   template <typename Attempt>
   void searchNeighbouringViews(TrackStep& step, Attempt& attempt);
   FaceDetector& detector();
+  void lose();  // the next frame starts from a detection (preferring the face last tracked)
 
   const ClmModel* model_;
   Camera camera_;
@@ -152,6 +160,12 @@ class Tracker {
   std::optional<FitState> state_;
   std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction
   int view_ = -1;
+  // The centre of the last tracked frame's points, kept while the track is lost (not by reset or
+  // setState): a detection prefers the face there (preferFacesAt).
+  std::optional<cv::Point2d> lastFace_;
+  // The state and view of the last frame tracked with a search below its own threshold: the next
+  // frame is detected, and searched from here when no detected face passes.
+  std::optional<std::pair<FitState, int>> doubted_;
   PointSmoother smoother_;
   std::pair<int, int> eyes_;  // the scheme's normalisation pair (parsed once)
 };

@@ -114,6 +114,12 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(real("start-shift", "Start grid spacing", "Search", search, 0.01, 0.5, 2,
                          "spacing of that grid in eye distances of the placed start",
                          [](S& s) -> double& { return s.startSearch.shift; }));
+  options.push_back(integer("faces-tried", "Faces tried", "Search", search, 1, 20,
+                            "detected faces searched, best first, until one's fit does not fail "
+                            "(clm3d fit: until one passes the point refiner's check, the most "
+                            "confident kept; without a check the best face only); 1 = the best "
+                            "face only",
+                            [](S& s) -> int& { return s.facesTried; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));

@@ -41,6 +41,23 @@ TEST(FaceBoxes, IouAndSuppression) {
   EXPECT_EQ(suppressOverlaps(tie, 0.3).front().box, boxes[1].box);
 }
 
+TEST(FaceBoxes, TheFacesAtAPointComeFirstInTheirOrder) {
+  std::vector<FaceBox> faces(4);
+  faces[0].box = {0, 0, 100, 100};    // elsewhere
+  faces[1].box = {200, 0, 100, 100};  // holds the point
+  faces[2].box = {400, 0, 100, 100};  // elsewhere
+  faces[3].box = {180, 20, 60, 60};   // holds it too
+  const std::vector<FaceBox> ranked = preferFacesAt(faces, cv::Point2d(220, 50));
+  ASSERT_EQ(ranked.size(), 4u);
+  EXPECT_EQ(ranked[0].box, faces[1].box);
+  EXPECT_EQ(ranked[1].box, faces[3].box);
+  EXPECT_EQ(ranked[2].box, faces[0].box);
+  EXPECT_EQ(ranked[3].box, faces[2].box);
+  // No face there: the detector's order stands.
+  const std::vector<FaceBox> unchanged = preferFacesAt(faces, cv::Point2d(700, 700));
+  for (std::size_t i = 0; i < faces.size(); ++i) EXPECT_EQ(unchanged[i].box, faces[i].box);
+}
+
 TEST(FaceDetector, MissingCascadeNamesTheFileAndThePackage) {
   const test::TempDir empty;
   try {

@@ -11,7 +11,10 @@
 #include <opencv2/core.hpp>
 #include <random>
 
+#include "core/detect/initialisation.hpp"
+#include "core/detect/start_search.hpp"
 #include "core/refine/descent_refinement.hpp"
+#include "core/refine/refined_fit.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/batch_fit.hpp"
 #include "core/track/tracker.hpp"
@@ -216,6 +219,76 @@ TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
   ASSERT_LT(doubted.fit->searchConfidence, 0.999);
   EXPECT_TRUE(doubted.row.success) << toString(doubted.failure);
   EXPECT_TRUE(detected.detected);
+}
+
+// A doubted frame's state is the fallback of the next frame's detection: a face the detector
+// cannot find (here smaller than its smallest box) is searched from it and still tracked.
+TEST(ImageFitRefiner, WhenTheDetectorFindsNoFaceTheDoubtedStateIsSearched) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead, 17.0);
+  FaceDetector detector;
+  ASSERT_TRUE(detector.detect(scene.image).empty()) << "the premise: no face found";
+  TrackerSettings settings;
+  settings.minConfidence = 0.999;  // every search doubted, on either scale
+  settings.minExpertConfidence = 0.999;
+  Tracker tracker(model, scene.camera, settings);
+  tracker.setState(scene.truth, -1);
+  const TrackStep first = tracker.track(scene.image, 0, 0.0);
+  ASSERT_TRUE(first.row.success) << toString(first.failure);
+  ASSERT_LT(first.fit->searchConfidence, 0.999);
+  const TrackStep second = tracker.track(scene.image, 1, 0.04);
+  EXPECT_FALSE(second.detected);
+  EXPECT_TRUE(second.row.success) << toString(second.failure);
+  EXPECT_LT(meanPointError(second.row.points, scene.truthPoints) / scene.interOcular, 0.15);
+  // Lost (a frame without the face), the fallback is gone too.
+  cv::Mat blank(scene.image.size(), scene.image.type(), cv::Scalar::all(128));
+  EXPECT_FALSE(tracker.track(blank, 2, 0.08).row.success);
+  EXPECT_FALSE(tracker.track(scene.image, 3, 0.12).row.success);
+}
+
+// A false detection ranked first costs a search, not the face: while the check rejects a face's
+// fit the next face is searched, and the most confident fit is kept.
+TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
+  // The face's box as the detector's calibration places it, and a smaller one on the background.
+  const BoxCalibration calibration = boxCalibration(DetectorKind::Cascade, false);
+  const Eigen::Vector2d eyes = 0.5 * (scene.truthPoints.col(7) + scene.truthPoints.col(10));
+  const double width = scene.interOcular / calibration.iodPerWidth;
+  FaceBox face;
+  face.box = cv::Rect2d(eyes.x() - (0.5 + calibration.eyeOffsetX) * width,
+                        eyes.y() - (0.5 + calibration.eyeOffsetY) * width, width, width);
+  FaceBox background;
+  background.box = cv::Rect2d(8.0, 90.0, 0.45 * width, 0.45 * width);
+  ASSERT_LT(background.box.br().x, face.box.x) << "the two boxes must not overlap";
+
+  Fitter fitter(model, scene.camera, FitSettings{});
+  FaceSearch search;
+  search.finish = [&](FitResult& fit) { refineFit(model.refiner, scene.image, fit); };
+  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  const auto error = [&](const FitResult& fit) {
+    return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
+  };
+  int tried = 0;
+  search.maxFaces = 1;
+  const FitResult first =
+      fitFromBestFace(fitter, model, scene.image, {background, face}, search, &tried);
+  EXPECT_EQ(tried, 1);
+  EXPECT_LT(first.confidence, 0.5);
+  EXPECT_GT(error(first), 0.5);
+  search.maxFaces = 3;
+  const FitResult next =
+      fitFromBestFace(fitter, model, scene.image, {background, face}, search, &tried);
+  EXPECT_EQ(tried, 2) << "stops at the first fit accepted";
+  EXPECT_GT(next.confidence, 0.5);
+  EXPECT_LT(error(next), 0.1);
+  // Without a verdict the first face's fit is kept.
+  search.accepted = {};
+  fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
+  EXPECT_EQ(tried, 1);
+  EXPECT_THROW(fitFromBestFace(fitter, model, scene.image, {}, search), InputError);
 }
 
 }  // namespace
