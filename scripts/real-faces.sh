@@ -96,11 +96,20 @@ for img in "$TEST"/*.jpg; do
     "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
       > "$OUT/logs/track-$stem.log" 2>&1
 done
+truths=(); preds=()
 for tracks in "$OUT"/tracks/image_*.csv; do
   stem=$(basename "${tracks%.csv}")
+  truths+=("$OUT/sequences/$stem/truth.csv"); preds+=("$tracks")
   "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" --json \
     > "$OUT/tracks/$stem.eval.json" 2>/dev/null || true
+  "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" | awk -v stem="$stem" '
+    /^  frames:/ { split($2, n, "/"); tracked = $4; wrong = substr($6, 2) }
+    /^  error:/ { mean = $3; sub(",", "", mean) }
+    /points within/ { within = $7 }
+    END { printf "%-12s %s/%s tracked, %s above 0.3, mean %s, within 0.18 %s\n", stem, tracked, n[2], wrong, mean, within }'
 done
+echo "all sequences, pooled:"
+"$CLM3D" eval --truth "${truths[@]}" --pred "${preds[@]}" --label clm3d | grep -E "^  (frames|error|convergence)"
 
 # 6. franck.mp4: clm3d's track against dlib on every 10th frame (no truth): the frames as images
 # (clm3d frames), dlib on them, clm3d's points per frame (clm3d truth --pts), paired by file stem.
