@@ -79,7 +79,9 @@ DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
   const Eigen::Index d =
       static_cast<Eigen::Index>(refiner.landmarks.size()) * kDescentFeaturesPerPoint;
   Eigen::MatrixXf features(d, m);
-  std::vector<bool> right(static_cast<std::size_t>(m));
+  // One byte per start: the photos' workers write neighbouring entries (a packed vector<bool> would
+  // share words between them, a data race that made the check differ from run to run).
+  std::vector<unsigned char> right(static_cast<std::size_t>(m));
   parallelFor(
       static_cast<int>(photos.size()), settings.threads,
       [&](int p) {
@@ -132,7 +134,7 @@ DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
   std::vector<bool> labels;
   for (int s : calibrate) {
     scores.push_back(check.weights.dot(features.col(s) - check.featureMean) + check.bias);
-    labels.push_back(right[static_cast<std::size_t>(s)]);
+    labels.push_back(right[static_cast<std::size_t>(s)] != 0);
   }
   std::tie(check.slope, check.offset) = fitLogistic(scores, labels);
   return check;

@@ -232,6 +232,18 @@ TEST(DescentRefinement, TrainingDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(one.meanShape, two.meanShape);
 }
 
+TEST(DescentCheck, TrainingDoesNotDependOnTheThreadCount) {
+  const std::vector<DescentPhoto> photos = drawnPhotos(60, 17);
+  DescentCheckSettings settings;
+  settings.threads = 1;
+  const DescentCheck one = trainDescentCheck(photos, trainedRefiner(), settings);
+  settings.threads = 2;
+  const DescentCheck two = trainDescentCheck(photos, trainedRefiner(), settings);
+  EXPECT_EQ(one.weights, two.weights);
+  EXPECT_EQ(one.slope, two.slope);
+  EXPECT_EQ(one.offset, two.offset);
+}
+
 TEST(DescentRefinement, EmptyRefinerOrNonFiniteStartLeavesThePointsAlone) {
   const cv::Mat image(100, 100, CV_8UC1, cv::Scalar(128));
   Eigen::Matrix2Xd points =
