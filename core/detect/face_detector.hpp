@@ -121,16 +121,16 @@ double boxIou(const cv::Rect2d& a, const cv::Rect2d& b);
 // or around one.
 std::vector<FaceBox> suppressOverlaps(std::vector<FaceBox> boxes, double maxIou);
 
-// The cascade's boxes (already ranked and suppressed) with dlib's (dlibAgreement): a cascade box
-// that a dlib box matches (IoU > maxIou) is confirmed and stays (the cascade's calibration places
-// the start closer); dlib boxes matching no cascade box join the list. Confirmed faces first, then
-// the larger; a box overlapping a better one as suppressOverlaps judges it goes (e.g. a cascade box
-// on part of a face that dlib found whole).
 // The faces whose box holds `point` first, then the others, each group in its given order: a
 // tracker that lost its fit detects again and prefers the face where it was (a second person
 // ranked first by the detector is not taken for the one tracked).
 std::vector<FaceBox> preferFacesAt(std::vector<FaceBox> faces, const cv::Point2d& point);
 
+// The cascade's boxes (already ranked and suppressed) with dlib's (dlibAgreement): a cascade box
+// that a dlib box matches (IoU > maxIou) is confirmed and stays (the cascade's calibration places
+// the start closer); dlib boxes matching no cascade box join the list. Confirmed faces first, then
+// the larger; a box overlapping a better one as suppressOverlaps judges it goes (e.g. a cascade box
+// on part of a face that dlib found whole).
 std::vector<FaceBox> rankByAgreement(const std::vector<FaceBox>& cascade, std::vector<FaceBox> hog,
                                      double maxIou);
 

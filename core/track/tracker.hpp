@@ -34,11 +34,12 @@ struct TrackerSettings {
   // on the frames it detects.
   StartSearchSettings startSearch{1, 0.10, {}};
   // The detector's faces searched, best first, until one's fit does not fail: a false detection
-  // ranked first (a mouth, a pattern on a shirt) no longer costs the face beside it. On the LFPW
-  // test photos the two fits the check rejected were both such boxes (docs/real-faces.md). The
-  // tracker judges each fit as it judges a frame; `clm3d fit` tries the next face while the point
-  // refiner's check rejects the fit and keeps the most confident (without a check, whose
-  // confidence would tell a wrong fit, it searches the best face only). 1 = the best face only.
+  // ranked first (a mouth, a pattern on a shirt) or a second person no longer costs the face. On
+  // the LFPW photo sequences a frame of image_0016 was lost to the other person's box
+  // (docs/initialisation.md). The tracker judges each fit as it judges a frame; `clm3d fit` tries
+  // the next face while the point refiner's check rejects the fit and keeps the most confident
+  // (without a check, whose confidence would tell a wrong fit, it searches the best face only). 1 =
+  // the best face only.
   int facesTried = 3;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
