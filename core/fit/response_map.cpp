@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "core/common/error.hpp"
+#include "core/fit/window_dots.hpp"
 
 namespace clm3d {
 
@@ -22,11 +23,88 @@ void sampleRegion(const cv::Mat& image, const Eigen::Vector2d& centre, double an
   const double c = std::cos(angle);
   const double s = std::sin(angle);
   const double half = (size - 1) / 2.0;
-  // Destination (u, v) -> source: centre + Rot (u - half, v - half).
-  const cv::Matx23d map(c, s, centre.x() - c * half - s * half,  //
-                        -s, c, centre.y() + s * half - c * half);
-  cv::warpAffine(image, out, map, cv::Size(size, size), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
-                 cv::BORDER_REPLICATE);
+  // Region pixel (u, v) -> image: origin + u (c, -s) + v (s, c). Sampled here rather than with
+  // cv::warpAffine, whose set-up cost dominated for these small regions (a quarter of a frame's
+  // search), and in floating point rather than its 1/32-pixel fixed point.
+  const double originX = centre.x() - c * half - s * half;
+  const double originY = centre.y() + s * half - c * half;
+  out.create(size, size, CV_32FC1);
+  // The region's corners bound its samples; inside the image with a pixel to spare (and a margin
+  // for the float positions below), no sample needs the border.
+  double lowX = originX, highX = originX, lowY = originY, highY = originY;
+  for (const double u : {0.0, size - 1.0}) {
+    for (const double v : {0.0, size - 1.0}) {
+      const double x = originX + u * c + v * s;
+      const double y = originY - u * s + v * c;
+      lowX = std::min(lowX, x), highX = std::max(highX, x);
+      lowY = std::min(lowY, y), highY = std::max(highY, y);
+    }
+  }
+  const bool inside =
+      lowX >= 0.0 && lowY >= 0.0 && highX < image.cols - 1.01 && highY < image.rows - 1.01;
+  const std::size_t step = image.step1();
+  const float* pixels = image.ptr<float>(0);
+  // Positions in float from each row's start: a region spans a few dozen pixels, so the rounding
+  // stays far below a thousandth of a pixel. First every sample's top-left pixel and weights, a
+  // loop the compiler vectorises, then the interpolation.
+  const auto stepX = static_cast<float>(c);
+  const auto stepY = static_cast<float>(-s);
+  thread_local std::vector<float> scratchX;
+  thread_local std::vector<float> scratchY;
+  thread_local std::vector<int> scratchColumns;
+  thread_local std::vector<int> scratchRows;
+  scratchX.resize(static_cast<std::size_t>(size));
+  scratchY.resize(scratchX.size());
+  scratchColumns.resize(scratchX.size());
+  scratchRows.resize(scratchX.size());
+  // Not aliased by the region's rows, so the compiler may keep them in registers and vectorise.
+  float* __restrict weightX = scratchX.data();
+  float* __restrict weightY = scratchY.data();
+  int* __restrict columns = scratchColumns.data();
+  int* __restrict rowsAt = scratchRows.data();
+  const float maxX = static_cast<float>(image.cols - 1);
+  const float maxY = static_cast<float>(image.rows - 1);
+  for (int v = 0; v < size; ++v) {
+    float* __restrict row = out.ptr<float>(v);
+    const auto rowX = static_cast<float>(originX + v * s);
+    const auto rowY = static_cast<float>(originY + v * c);
+    if (inside) {
+      for (int u = 0; u < size; ++u) {
+        const float x = rowX + static_cast<float>(u) * stepX;
+        const float y = rowY + static_cast<float>(u) * stepY;
+        const int x0 = static_cast<int>(x);  // x, y >= 0: truncation is the floor
+        const int y0 = static_cast<int>(y);
+        weightX[u] = x - static_cast<float>(x0);
+        weightY[u] = y - static_cast<float>(y0);
+        columns[u] = x0;
+        rowsAt[u] = y0;
+      }
+      for (int u = 0; u < size; ++u) {
+        const float* top = pixels + static_cast<std::size_t>(rowsAt[u]) * step + columns[u];
+        const float* bottom = top + step;
+        const float upper = top[0] + weightX[u] * (top[1] - top[0]);
+        const float lower = bottom[0] + weightX[u] * (bottom[1] - bottom[0]);
+        row[u] = upper + weightY[u] * (lower - upper);
+      }
+      continue;
+    }
+    // Near the border: positions clamped to the image, the last row and column repeated.
+    for (int u = 0; u < size; ++u) {
+      const float x = std::clamp(rowX + static_cast<float>(u) * stepX, 0.0f, maxX);
+      const float y = std::clamp(rowY + static_cast<float>(u) * stepY, 0.0f, maxY);
+      const int x0 = static_cast<int>(x);
+      const int y0 = static_cast<int>(y);
+      const int x1 = std::min(x0 + 1, image.cols - 1);
+      const int y1 = std::min(y0 + 1, image.rows - 1);
+      const float fx = x - static_cast<float>(x0);
+      const float fy = y - static_cast<float>(y0);
+      const float* top = pixels + static_cast<std::size_t>(y0) * step;
+      const float* bottom = pixels + static_cast<std::size_t>(y1) * step;
+      const float upper = top[x0] + fx * (top[x1] - top[x0]);
+      const float lower = bottom[x0] + fx * (bottom[x1] - bottom[x0]);
+      row[u] = upper + fy * (lower - upper);
+    }
+  }
 }
 
 void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSize,
@@ -39,39 +117,25 @@ void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSiz
     throw Error("expertScores: region or weights do not match the patch size");
   }
   // w . n(x) = (w . x - mean(x) sum(w)) / sd(x), sd the population SD (normalisePatch); a flat
-  // window scores 0, as normalisePatch makes it zeros. Window sums from integral images, the dot
-  // products directly: 9 x 9 windows of 20 x 20 cost about 32 000 multiply-adds per unit.
+  // window scores 0, as normalisePatch makes it zeros.
   const int rows = region.rows - patchSize + 1;
   const int cols = region.cols - patchSize + 1;
-  thread_local cv::Mat sum;  // scratch: this runs per landmark and iteration of every frame
-  thread_local cv::Mat squares;
-  cv::integral(region, sum, squares, CV_64F, CV_64F);
+  thread_local std::vector<double> mean;  // scratch: this runs per landmark and iteration
+  thread_local std::vector<double> variance;
+  windowMoments(region, patchSize, mean, variance);
+  if (!scores.isContinuous()) scores.release();
   scores.create(rows, cols, CV_32FC(units));
-  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  auto* out = scores.ptr<float>(0);
+  windowDots(region, expert.weights, patchSize, out);
   const Eigen::VectorXf weightSums = expert.weights.colwise().sum().transpose();
-  const double n = pixels;
-  for (int y = 0; y < rows; ++y) {
-    auto* out = scores.ptr<float>(y);
-    for (int x = 0; x < cols; ++x, out += units) {
-      const auto boxSum = [&](const cv::Mat& table) {
-        return table.at<double>(y + patchSize, x + patchSize) - table.at<double>(y, x + patchSize) -
-               table.at<double>(y + patchSize, x) + table.at<double>(y, x);
-      };
-      const double mean = boxSum(sum) / n;
-      const double variance = boxSum(squares) / n - mean * mean;
-      if (!(variance > 1e-12)) {
-        std::fill(out, out + units, 0.0f);
-        continue;
-      }
-      const double inverseSd = 1.0 / std::sqrt(variance);
-      const Eigen::Map<const RowMajor, 0, Eigen::OuterStride<>> window(
-          region.ptr<float>(y) + x, patchSize, patchSize, Eigen::OuterStride<>(region.cols));
-      for (int k = 0; k < units; ++k) {
-        const Eigen::Map<const RowMajor> weights(expert.weights.col(k).data(), patchSize,
-                                                 patchSize);
-        const double dot = window.cwiseProduct(weights).sum();
-        out[k] = static_cast<float>((dot - mean * weightSums[k]) * inverseSd);
-      }
+  for (std::size_t w = 0; w < mean.size(); ++w, out += units) {
+    if (!(variance[w] > 1e-12)) {
+      std::fill(out, out + units, 0.0f);
+      continue;
+    }
+    const double inverseSd = 1.0 / std::sqrt(variance[w]);
+    for (int k = 0; k < units; ++k) {
+      out[k] = static_cast<float>((out[k] - mean[w] * weightSums[k]) * inverseSd);
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/error.hpp"
+#include "core/image/area_resize.hpp"
 
 namespace clm3d {
 
@@ -51,17 +52,22 @@ void makeWorkingImage(const cv::Mat& input, const Eigen::Vector2d& boxMin,
   const double gainY = static_cast<double>(height) / roi.rows;
 
   if (out.levels.size() != static_cast<std::size_t>(levels)) out.levels.resize(levels);
-  cv::Mat resized;
-  if (width == roi.cols && height == roi.rows) {
-    resized = *grey;
+  if (width < roi.cols && height <= roi.rows) {
+    // Area averaging, as training reduces its photos (core/train/photo_samples.cpp).
+    reduceByArea(*grey, cv::Size(width, height), grey->type() == CV_32FC1 ? 1.0 : 1.0 / 255.0,
+                 out.levels[0]);
   } else {
-    cv::resize(*grey, resized, cv::Size(width, height), 0, 0,
-               scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
-  }
-  if (resized.type() == CV_32FC1) {
-    resized.copyTo(out.levels[0]);
-  } else {
-    resized.convertTo(out.levels[0], CV_32F, 1.0 / 255.0);
+    cv::Mat resized;
+    if (width == roi.cols && height == roi.rows) {
+      resized = *grey;
+    } else {
+      cv::resize(*grey, resized, cv::Size(width, height), 0, 0, cv::INTER_LINEAR);
+    }
+    if (resized.type() == CV_32FC1) {
+      resized.copyTo(out.levels[0]);
+    } else {
+      resized.convertTo(out.levels[0], CV_32F, 1.0 / 255.0);
+    }
   }
   for (int level = 1; level < levels; ++level) {
     const cv::Mat& finer = out.levels[level - 1];
