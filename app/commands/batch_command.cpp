@@ -32,6 +32,7 @@ struct BatchArgs {
   std::string shard;
   bool redo = false;
   bool quiet = false;
+  bool keepRejected = false;
   int slurmTasks = 0;
   std::vector<std::string> sbatchArgs;
   bool noWait = false;
@@ -83,8 +84,10 @@ BatchJob makeJob(const BatchArgs& args) {
   return job;
 }
 
-void reportCounts(int items, int ok, int noFace, int errors, const fs::path& summary) {
-  std::cout << ok << " of " << items << " items ok, " << noFace << " without a face, " << errors
+void reportCounts(int items, int ok, int rejected, int noFace, int errors,
+                  const fs::path& summary) {
+  std::cout << ok << " of " << items << " items ok, " << rejected
+            << " rejected by the point check, " << noFace << " without a face, " << errors
             << " failed (summary: " << summary.string() << ")\n";
   if (errors > 0) {
     throw InputError(std::to_string(errors) + " of " + std::to_string(items) +
@@ -97,6 +100,7 @@ BatchSettings makeSettings(const BatchArgs& args) {
   BatchSettings settings;
   settings.track = args.fit.tracker;
   settings.image = imageFitSettings(args.fit.tracker, args.fit.fovDeg);
+  settings.image.keepRejected = args.keepRejected;
   return settings;
 }
 
@@ -124,8 +128,8 @@ void runLocal(const BatchArgs& args) {
             << ": " << ran << " items run in " << seconds << " s ("
             << (seconds > 0.0 ? 60.0 * ran / seconds : 0.0) << " items/min), " << summary.skipped
             << " finished before\n";
-  reportCounts(static_cast<int>(summary.rows.size()), summary.ok, summary.noFace, summary.errors,
-               summary.summaryCsv);
+  reportCounts(static_cast<int>(summary.rows.size()), summary.ok, summary.rejected, summary.noFace,
+               summary.errors, summary.summaryCsv);
 }
 
 void runSlurm(const BatchArgs& args) {
@@ -188,15 +192,15 @@ void runSlurm(const BatchArgs& args) {
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + "; the task logs are in " + slurmDir.string());
   }
-  reportCounts(static_cast<int>(merged.rows.size()), merged.ok, merged.noFace, merged.errors,
-               merged.summaryCsv);
+  reportCounts(static_cast<int>(merged.rows.size()), merged.ok, merged.rejected, merged.noFace,
+               merged.errors, merged.summaryCsv);
 }
 
 void runMerge(const fs::path& outDir) {
   const BatchMergeSummary merged = mergeBatchShards(outDir);
   std::cout << "merged " << merged.shards << " shard summaries\n";
-  reportCounts(static_cast<int>(merged.rows.size()), merged.ok, merged.noFace, merged.errors,
-               merged.summaryCsv);
+  reportCounts(static_cast<int>(merged.rows.size()), merged.ok, merged.rejected, merged.noFace,
+               merged.errors, merged.summaryCsv);
 }
 
 }  // namespace
@@ -226,6 +230,9 @@ void addBatchCommand(CLI::App& root) {
                       "summary-I-of-N.csv; `clm3d batch merge` joins the N summaries");
   command->add_flag("--redo", args->redo, "run finished items again");
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
+  command->add_flag("--keep-rejected", args->keepRejected,
+                    "images: write the points of a fit that the model's point check rejects (by "
+                    "default they are not written)");
   command
       ->add_option("--slurm", args->slurmTasks,
                    "submit a Slurm job array of N tasks (sbatch), one shard each, wait for it "

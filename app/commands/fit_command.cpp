@@ -27,6 +27,7 @@ struct FitArgs {
   fs::path model, image, init, out, overlay;
   fs::path images, outDir, initDir;
   bool quiet = false;
+  bool keepRejected = false;
   double startOffset = 0.0;
   FitOptions fit;
 };
@@ -35,6 +36,7 @@ ImageFitSettings imageFitSettings(const FitArgs& args) {
   ImageFitSettings settings = clm3d::imageFitSettings(args.fit.tracker, args.fit.fovDeg);
   settings.startOffset = args.startOffset;
   settings.startOffsetSeed = args.fit.seed();
+  settings.keepRejected = args.keepRejected;
   return settings;
 }
 
@@ -46,23 +48,32 @@ void runSingleFit(const FitArgs& args) {
   if (outcome.status == ImageFitStatus::NoFace) {
     throw InputError(outcome.message + " (give the start points with --init)");
   }
-  if (outcome.status != ImageFitStatus::Ok) throw InputError(outcome.message);
+  if (outcome.status != ImageFitStatus::Ok && outcome.status != ImageFitStatus::Rejected) {
+    throw InputError(outcome.message);
+  }
   const FitResult& fit = *outcome.fit;
-  std::cout << std::fixed << std::setprecision(3) << "fitted " << args.image.string() << " -> "
-            << args.out.string() << ": confidence " << fit.confidence << ", view (pitch "
-            << outcome.viewPitchDeg << ", yaw " << outcome.viewYawDeg << "), " << fit.iterations
-            << " iterations" << (fit.converged ? "" : " (not converged)") << ", "
-            << std::setprecision(2) << outcome.fitMilliseconds << " ms\n";
+  const bool rejected = outcome.status == ImageFitStatus::Rejected;
+  // The overlay first: it shows where a rejected fit went.
   if (!args.overlay.empty()) {
     TrackStep step;
     step.fit = fit;
-    step.row.success = true;
+    step.row.success = !rejected;
     step.row.confidence = fit.confidence;
     cv::Mat drawn = fitter.lastImage().clone();
     drawFitOverlay(drawn, step, *fitter.lastFitter(), model.scheme());
     writeImage(args.overlay, drawn);
     std::cout << "overlay: " << args.overlay.string() << '\n';
   }
+  if (rejected && !args.keepRejected) {
+    throw InputError(outcome.message + "; no points written (--keep-rejected writes them)");
+  }
+  if (rejected) std::cerr << "warning: " << outcome.message << '\n';
+  std::cout << std::fixed << std::setprecision(3) << (rejected ? "rejected " : "fitted ")
+            << args.image.string() << " -> " << args.out.string() << ": confidence "
+            << fit.confidence << ", view (pitch " << outcome.viewPitchDeg << ", yaw "
+            << outcome.viewYawDeg << "), " << fit.iterations << " iterations"
+            << (fit.converged ? "" : " (not converged)") << ", " << std::setprecision(2)
+            << outcome.fitMilliseconds << " ms\n";
 }
 
 // Exit code 1 when any image had an error (after the whole batch and its summary), else 0.
@@ -85,10 +96,14 @@ void runBatchFit(const FitArgs& args) {
   for (const ImageFitOutcome& outcome : summary.outcomes) {
     if (outcome.status == ImageFitStatus::Ok) fitSum += outcome.fitMilliseconds;
     if (outcome.status == ImageFitStatus::Error) std::cerr << "error: " << outcome.message << '\n';
+    if (outcome.status == ImageFitStatus::Rejected) {
+      std::cerr << "rejected: " << outcome.message << '\n';
+    }
   }
   std::cout << std::fixed << std::setprecision(1) << "fitted " << summary.ok << " of "
-            << summary.outcomes.size() << " images (" << summary.noFace << " without a face, "
-            << summary.errors << " errors), mean fit "
+            << summary.outcomes.size() << " images (" << summary.rejected
+            << " rejected by the point check" << (args.keepRejected ? ", points kept" : "") << ", "
+            << summary.noFace << " without a face, " << summary.errors << " errors), mean fit "
             << (summary.ok > 0 ? fitSum / summary.ok : 0.0) << " ms -> " << args.outDir.string()
             << " (summary: " << summary.summaryCsv.string() << ")\n";
   if (summary.errors > 0) {
@@ -142,6 +157,10 @@ void addFitCommand(CLI::App& root) {
                       "with --images: start each image from STEM.pts, .ljson or .csv in this "
                       "folder instead of the face detector");
   command->add_flag("--quiet", args->quiet, "with --images: no per-image progress on stderr");
+  command->add_flag("--keep-rejected", args->keepRejected,
+                    "write the points of a fit that the model's point check rejects (status "
+                    "rejected; by default they are not written, as a tracker does not report such "
+                    "a frame as tracked)");
   command
       ->add_option("--start-offset", args->startOffset,
                    "move every start by this share of its eye distance, in a direction drawn per "

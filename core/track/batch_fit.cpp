@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <numbers>
 #include <opencv2/core.hpp>
@@ -86,6 +87,8 @@ const char* toString(ImageFitStatus status) {
   switch (status) {
     case ImageFitStatus::Ok:
       return "ok";
+    case ImageFitStatus::Rejected:
+      return "rejected";
     case ImageFitStatus::NoFace:
       return "no-face";
     case ImageFitStatus::Error:
@@ -171,7 +174,17 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       outcome.viewPitchDeg = view.pitchDeg;
       outcome.viewYawDeg = view.yawDeg;
     }
-    if (!output.empty()) {
+    const bool rejected =
+        !std::isnan(fit.searchConfidence) && fit.confidence < settings_.minCheckProbability;
+    if (rejected) {
+      std::ostringstream reason;
+      reason << std::fixed << std::setprecision(2)
+             << "the model's point check rejects the fit (probability " << fit.confidence
+             << ", below " << settings_.minCheckProbability
+             << "): the points are probably not on a face";
+      outcome.message = fileMessage(image, reason.str());
+    }
+    if (!output.empty() && (!rejected || settings_.keepRejected)) {
       const Scheme scheme = model_->scheme();
       LandmarkSet points(scheme.size(), 2);
       for (int i = 0; i < scheme.size(); ++i) points.set(i, Eigen::Vector2d(fit.points.col(i)));
@@ -179,7 +192,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       outcome.output = output;
     }
     outcome.fit = std::move(fit);
-    outcome.status = ImageFitStatus::Ok;
+    outcome.status = rejected ? ImageFitStatus::Rejected : ImageFitStatus::Ok;
   } catch (const InputError& e) {
     // Messages of the image, points and output files already name their file; others (a fit on
     // an image too small for the model) are given the image's name.
@@ -280,6 +293,9 @@ BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
       case ImageFitStatus::Ok:
         ++summary.ok;
         break;
+      case ImageFitStatus::Rejected:
+        ++summary.rejected;
+        break;
       case ImageFitStatus::NoFace:
         ++summary.noFace;
         break;
@@ -293,9 +309,10 @@ BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
     if (progress) {
       std::string stage = "fit " + std::to_string(i + 1) + "/" + std::to_string(total) + " " +
                           image.filename().string() + " ";
-      stage += done.status == ImageFitStatus::Ok       ? fixedCell(done.fitMilliseconds, 1) + " ms"
-               : done.status == ImageFitStatus::NoFace ? std::string("no face")
-                                                       : std::string("error");
+      stage += done.status == ImageFitStatus::Ok ? fixedCell(done.fitMilliseconds, 1) + " ms"
+               : done.status == ImageFitStatus::Rejected ? std::string("rejected")
+               : done.status == ImageFitStatus::NoFace   ? std::string("no face")
+                                                         : std::string("error");
       progress(static_cast<double>(i + 1) / static_cast<double>(total), stage);
     }
   }

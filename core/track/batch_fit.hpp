@@ -49,6 +49,10 @@ struct ImageFitSettings {
   // faces, and the most confident fit kept (TrackerSettings::facesTried).
   int facesTried = TrackerSettings{}.facesTried;
   double minCheckProbability = TrackerSettings{}.minCheckProbability;
+  // A fit whose check probability stays below minCheckProbability is Rejected and its points are
+  // not written, as a tracker does not report such a frame as tracked; true writes them all the
+  // same (the status stays Rejected).
+  bool keepRejected = false;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,
@@ -56,22 +60,26 @@ struct ImageFitSettings {
 // field of view.
 ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg);
 
-enum class ImageFitStatus { Ok, NoFace, Error };
-// "ok", "no-face", "error" (the summary's status column).
+// Rejected: the search ran, but the model's point check (a model trained with photos) gives its
+// points a probability below ImageFitSettings::minCheckProbability: they are probably not on the
+// face.
+enum class ImageFitStatus { Ok, Rejected, NoFace, Error };
+// "ok", "rejected", "no-face", "error" (the summary's status column).
 const char* toString(ImageFitStatus status);
 
 struct ImageFitOutcome {
   std::filesystem::path image;
   ImageFitStatus status = ImageFitStatus::Error;
-  std::string message;  // NoFace and Error: one line naming the file and the problem
+  std::string message;  // Rejected, NoFace and Error: one line naming the file and the problem
   // Milliseconds of the search and of the face detection; NaN when not done (detection is not
   // done when the search starts from given points).
   double fitMilliseconds = std::numeric_limits<double>::quiet_NaN();
   double detectMilliseconds = std::numeric_limits<double>::quiet_NaN();
-  std::optional<FitResult> fit;                                    // Ok only
+  std::optional<FitResult> fit;                                    // Ok and Rejected
   double viewPitchDeg = std::numeric_limits<double>::quiet_NaN();  // centre of the final view
   double viewYawDeg = std::numeric_limits<double>::quiet_NaN();
-  std::filesystem::path output;  // the points written (Ok with an output path), else empty
+  // The points written (Ok, or Rejected with keepRejected, with an output path), else empty.
+  std::filesystem::path output;
 };
 
 // Fits images one at a time with one model: the face detector is made on first use and kept, the
@@ -121,6 +129,7 @@ struct BatchFitJob {
 struct BatchFitSummary {
   std::vector<ImageFitOutcome> outcomes;  // in job order
   int ok = 0;
+  int rejected = 0;
   int noFace = 0;
   int errors = 0;
   std::filesystem::path summaryCsv;
@@ -152,11 +161,11 @@ using ImageFitCallback = std::function<void(std::size_t index, const ImageFitOut
 // fitted image and OUT-DIR/summary.csv (atomically) at the end. An image whose stem repeats an
 // earlier one's is an error row (its points would overwrite the other's). With an init folder, an
 // image without a points file there is an error row. Progress goes 0..1 over the images, its stage
-// "fit K/N NAME 3.1 ms" (or "... no face" / "... error"). When cancelled (checked between
-// images) the summary of the images done so far is written and Cancelled thrown. Throws InputError,
-// before any image, when the output folder is an image's folder or the init folder (the points
-// would overwrite the mark-ups or starts there) or cannot be created, and when the summary cannot
-// be written.
+// "fit K/N NAME 3.1 ms" (or "... rejected" / "... no face" / "... error"). When cancelled (checked
+// between images) the summary of the images done so far is written and Cancelled thrown. Throws
+// InputError, before any image, when the output folder is an image's folder or the init folder (the
+// points would overwrite the mark-ups or starts there) or cannot be created, and when the summary
+// cannot be written.
 BatchFitSummary fitImages(const ClmModel& model, const BatchFitJob& job,
                           const ImageFitSettings& settings, const ProgressCallback& progress = {},
                           const CancelToken* cancel = nullptr,

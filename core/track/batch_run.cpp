@@ -73,8 +73,8 @@ std::optional<int> parseInt(std::string_view text) {
 }
 
 std::optional<ImageFitStatus> parseStatus(std::string_view text) {
-  for (const ImageFitStatus status :
-       {ImageFitStatus::Ok, ImageFitStatus::NoFace, ImageFitStatus::Error}) {
+  for (const ImageFitStatus status : {ImageFitStatus::Ok, ImageFitStatus::Rejected,
+                                      ImageFitStatus::NoFace, ImageFitStatus::Error}) {
     if (text == toString(status)) return status;
   }
   return std::nullopt;
@@ -95,7 +95,7 @@ std::string clockText(double seconds) {
 }
 
 // The row an earlier run left for `input`, when it finished the item (ok with its output in place,
-// or an image without a face); nullopt when the item must run.
+// an image whose fit the check rejected, or one without a face); nullopt when the item must run.
 std::optional<BatchRow> finishedRow(const fs::path& input, const fs::path& output,
                                     const fs::path& status) {
   std::error_code error;
@@ -109,7 +109,7 @@ std::optional<BatchRow> finishedRow(const fs::path& input, const fs::path& outpu
   if (rows.size() != 1 || rows[0].item != input.string()) return std::nullopt;
   const BatchRow& row = rows[0];
   if (row.status == ImageFitStatus::Ok && fs::exists(output, error)) return row;
-  if (row.status == ImageFitStatus::NoFace) return row;
+  if (row.status == ImageFitStatus::NoFace || row.status == ImageFitStatus::Rejected) return row;
   return std::nullopt;
 }
 
@@ -138,11 +138,12 @@ BatchRow errorRow(const fs::path& input, std::string message, double seconds) {
   return row;
 }
 
-// Counts the rows' statuses into a summary's ok, noFace and errors.
+// Counts the rows' statuses into a summary's ok, rejected, noFace and errors.
 template <typename Summary>
 void tally(const std::vector<BatchRow>& rows, Summary& summary) {
   for (const BatchRow& row : rows) {
     summary.ok += row.status == ImageFitStatus::Ok ? 1 : 0;
+    summary.rejected += row.status == ImageFitStatus::Rejected ? 1 : 0;
     summary.noFace += row.status == ImageFitStatus::NoFace ? 1 : 0;
     summary.errors += row.status == ImageFitStatus::Error ? 1 : 0;
   }
@@ -302,6 +303,7 @@ std::map<std::string, std::string> batchOptions(const BatchJob& job,
     options["fov"] = fov.str();
   }
   if (!job.initDir.empty()) options["init-dir"] = job.initDir.string();
+  if (settings.image.keepRejected) options["keep-rejected"] = "yes";
   return options;
 }
 

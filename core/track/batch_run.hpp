@@ -91,22 +91,22 @@ std::vector<std::size_t> shardItems(std::size_t total, const BatchShard& shard);
 
 struct BatchRunSummary {
   std::vector<BatchRow> rows;  // the shard's items in job order
-  int ok = 0, noFace = 0, errors = 0;
+  int ok = 0, rejected = 0, noFace = 0, errors = 0;
   int skipped = 0;  // finished by an earlier run and kept
   std::filesystem::path summaryCsv;
 };
 
 // Runs the shard's items of the job. The options (batchOptions) are checked against those the
 // folder's earlier runs recorded (checkBatchOptions; not with job.redo, which runs every item
-// again) and recorded in OUT/options.txt. Items finished by an earlier run (an ok or no-face status
-// file whose output exists) keep their row unless job.redo; others run on job.threads workers.
-// Leftover temporaries of a killed run (OUT/.NAME.tmp*) are removed first. Progress (thread-safe,
-// once per finished item) goes 0..1 over the items to run, its stage
-// "batch K/N NAME ok 1.2 s, ETA 0:35". When cancelled (checked before each item and during a
-// video) the running items stop without output, the summary of what is done is written (a
-// whole run's; a shard writes none, so that a merge cannot take it for complete) and Cancelled
-// thrown. Throws InputError before any item for an output folder that is an input's
-// folder or cannot be made, and when the summary cannot be written.
+// again) and recorded in OUT/options.txt. Items finished by an earlier run (an ok status file whose
+// output exists, or a rejected or no-face one) keep their row unless job.redo; others run on
+// job.threads workers. Leftover temporaries of a killed run (OUT/.NAME.tmp*) are removed first.
+// Progress (thread-safe, once per finished item) goes 0..1 over the items to run, its stage "batch
+// K/N NAME ok 1.2 s, ETA 0:35". When cancelled (checked before each item and during a video) the
+// running items stop without output, the summary of what is done is written (a whole run's; a shard
+// writes none, so that a merge cannot take it for complete) and Cancelled thrown. Throws InputError
+// before any item for an output folder that is an input's folder or cannot be made, and when the
+// summary cannot be written.
 BatchRunSummary runBatch(const ClmModel& model, const BatchJob& job, const BatchSettings& settings,
                          const ProgressCallback& progress = {},
                          const CancelToken* cancel = nullptr);
@@ -114,7 +114,7 @@ BatchRunSummary runBatch(const ClmModel& model, const BatchJob& job, const Batch
 struct BatchMergeSummary {
   std::vector<BatchRow> rows;  // job order
   int shards = 0;
-  int ok = 0, noFace = 0, errors = 0;
+  int ok = 0, rejected = 0, noFace = 0, errors = 0;
   std::filesystem::path summaryCsv;  // OUT/summary.csv
 };
 

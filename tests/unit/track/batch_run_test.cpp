@@ -40,14 +40,15 @@ TEST(BatchRun, ShardsParseAndCoverEveryItemOnce) {
 }
 
 TEST(BatchRun, SummaryRoundTripsAwkwardCells) {
-  std::vector<BatchRow> rows(3);
+  std::vector<BatchRow> rows(4);
   rows[0] = {"a, b.png", ImageFitStatus::Ok, 1, 0, 0.25, ""};
   rows[1] = {"say \"hi\".mp4", ImageFitStatus::Error, 0, 0, 1.5, "x: broken,\nreally"};
   rows[2] = {"c.jpg", ImageFitStatus::NoFace, 1, 1, std::nan(""), "c.jpg: no face found"};
+  rows[3] = {"d.jpg", ImageFitStatus::Rejected, 1, 1, 0.5, "d.jpg: the check rejects the fit"};
   const std::string text = formatBatchSummary(rows);
   EXPECT_EQ(text.substr(0, text.find('\n')), "item,status,frames,failures,time,error");
   const auto back = parseBatchSummary(text, "t.csv");
-  ASSERT_EQ(back.size(), 3U);
+  ASSERT_EQ(back.size(), 4U);
   EXPECT_EQ(back[0].item, "a, b.png");
   EXPECT_EQ(back[1].item, "say \"hi\".mp4");
   EXPECT_EQ(back[1].error, "x: broken, really");  // one line per row
@@ -55,6 +56,7 @@ TEST(BatchRun, SummaryRoundTripsAwkwardCells) {
   EXPECT_DOUBLE_EQ(back[1].seconds, 1.5);
   EXPECT_TRUE(std::isnan(back[2].seconds));
   EXPECT_EQ(back[2].failures, 1);
+  EXPECT_EQ(back[3].status, ImageFitStatus::Rejected);
   EXPECT_THROW(parseBatchSummary("a,b\n", "t.csv"), InputError);
   EXPECT_THROW(parseBatchSummary(text + "d.png,maybe,1,0,1.0,\n", "t.csv"), InputError);
   EXPECT_THROW(parseBatchSummary(text + "\"open,ok,1,0,1.0,\n", "t.csv"), InputError);

@@ -194,6 +194,41 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   EXPECT_LT(lost.fit->confidence, settings.minCheckProbability);
 }
 
+// A still image whose fit the check rejects is reported as rejected, and its points are not
+// written unless asked for: a photo of noise, searched from the face's points.
+TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  cv::Mat noise(scene.image.size(), scene.image.type());
+  cv::randu(noise, 0, 255);
+  writeImage(dir / "noise.png", noise);
+
+  ImageFitter fitter(model, ImageFitSettings{});
+  const ImageFitOutcome right = fitter.fitFile(dir / "face.png", dir / "face.pts", dir / "a.pts");
+  ASSERT_EQ(right.status, ImageFitStatus::Ok) << right.message;
+  EXPECT_TRUE(fs::exists(dir / "a.pts"));
+  const ImageFitOutcome wrong = fitter.fitFile(dir / "noise.png", dir / "face.pts", dir / "b.pts");
+  ASSERT_EQ(wrong.status, ImageFitStatus::Rejected) << wrong.message;
+  ASSERT_TRUE(wrong.fit.has_value());
+  EXPECT_LT(wrong.fit->confidence, ImageFitSettings{}.minCheckProbability);
+  EXPECT_NE(wrong.message.find("noise.png"), std::string::npos) << wrong.message;
+  EXPECT_NE(wrong.message.find("rejects"), std::string::npos) << wrong.message;
+  EXPECT_FALSE(fs::exists(dir / "b.pts"));
+  EXPECT_TRUE(wrong.output.empty());
+  EXPECT_STREQ(toString(wrong.status), "rejected");
+
+  ImageFitSettings keep;
+  keep.keepRejected = true;
+  const ImageFitOutcome kept =
+      ImageFitter(model, keep).fitFile(dir / "noise.png", dir / "face.pts", dir / "c.pts");
+  EXPECT_EQ(kept.status, ImageFitStatus::Rejected);
+  EXPECT_TRUE(fs::exists(dir / "c.pts"));
+  EXPECT_EQ(kept.output, dir / "c.pts");
+}
+
 // A checked frame is reported on the check, but its 3D state starts the next frame only when the
 // search scored above its own threshold; else the next frame is detected afresh (a drifting pose
 // whose refined points are still right must not carry on).
