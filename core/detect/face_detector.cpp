@@ -352,4 +352,28 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
   return boxes;
 }
 
+std::vector<FaceBox> FaceDetector::detectTurned(const cv::Mat& bgrOrGrey, double angleDeg) {
+  if (bgrOrGrey.empty()) return detect(bgrOrGrey);  // its error
+  const cv::Point2f centre(0.5f * static_cast<float>(bgrOrGrey.cols - 1),
+                           0.5f * static_cast<float>(bgrOrGrey.rows - 1));
+  const cv::Mat turn = cv::getRotationMatrix2D(centre, angleDeg, 1.0);
+  cv::Mat turned;
+  cv::warpAffine(bgrOrGrey, turned, turn, bgrOrGrey.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+                 cv::Scalar::all(0));
+  cv::Mat back;
+  cv::invertAffineTransform(turn, back);
+  std::vector<FaceBox> faces = detect(turned);
+  for (FaceBox& face : faces) {
+    const cv::Point2d middle(face.box.x + 0.5 * face.box.width, face.box.y + 0.5 * face.box.height);
+    const cv::Point2d original(
+        back.at<double>(0, 0) * middle.x + back.at<double>(0, 1) * middle.y + back.at<double>(0, 2),
+        back.at<double>(1, 0) * middle.x + back.at<double>(1, 1) * middle.y +
+            back.at<double>(1, 2));
+    face.box.x = original.x - 0.5 * face.box.width;
+    face.box.y = original.y - 0.5 * face.box.height;
+    face.rollDeg = -angleDeg;
+  }
+  return faces;
+}
+
 }  // namespace clm3d

@@ -32,6 +32,11 @@ struct FaceBox {
   bool profile = false;
   bool mirrored = false;
   DetectorKind detector = DetectorKind::Cascade;  // which detector found it (calibration differs)
+  // The face's in-plane rotation, degrees in the sense of Pose::roll (counter-clockwise on the
+  // screen): non-zero for a face found in a turned copy of the image (detectTurned). `box` is then
+  // the detector's box turned back around its centre: its centre and size hold, its sides are
+  // the face's turned ones.
+  double rollDeg = 0.0;
 };
 
 struct FaceDetectorSettings {
@@ -97,6 +102,12 @@ class FaceDetector {
   // faces both detectors find first, then the largest). Empty when there is none.
   // Throws InputError for an empty image or an unsupported type.
   std::vector<FaceBox> detect(const cv::Mat& bgrOrGrey);
+
+  // Faces tilted beyond the detectors' reach (the cascades and dlib's HOG find faces within about
+  // 15 degrees of upright): detect() on the image turned counter-clockwise by angleDeg around its
+  // centre (corners outside it black), each box's centre taken back to the image and its rollDeg
+  // set to -angleDeg, the tilt that the turn made upright. Same order and errors as detect().
+  std::vector<FaceBox> detectTurned(const cv::Mat& bgrOrGrey, double angleDeg);
 
   DetectorKind kind() const { return kind_; }
   const FaceDetectorSettings& settings() const { return settings_; }

@@ -223,7 +223,7 @@ FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox
                       const BoxCalibration& calibration) {
   const cv::Rect2d& r = box.box;
   if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.width) &&
-        std::isfinite(r.height) && r.width > 0.0 && r.height > 0.0)) {
+        std::isfinite(r.height) && r.width > 0.0 && r.height > 0.0 && std::isfinite(box.rollDeg))) {
     throw InputError("initialisation: the face box is empty or not finite");
   }
   if (!(calibration.iodPerWidth > 0.0 && std::isfinite(calibration.iodPerWidth))) {
@@ -244,7 +244,7 @@ FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox
   state.shape = Eigen::VectorXd::Zero(shape.modeCount());
   state.pose.scale = 1.0;
   state.pose.pitch = 0.0;
-  state.pose.roll = 0.0;
+  state.pose.roll = radians(box.rollDeg);
   state.pose.yaw = planar ? 0.0 : profileYaw;
 
   // Frontal eye distance wanted in pixels; the planar model sees the foreshortened one.
@@ -252,9 +252,15 @@ FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox
   if (planar) iodPixels *= std::cos(profileYaw);
   const double depth = meanFocal(camera) * iodModel / iodPixels;  // of the eye midpoint
 
-  const Eigen::Vector2d target(
-      r.x + 0.5 * r.width + (box.mirrored ? -1.0 : 1.0) * calibration.eyeOffsetX * r.width,
-      r.y + 0.5 * r.height + calibration.eyeOffsetY * r.width);
+  // The eye midpoint's calibrated offset from the box centre, turned with the face (a positive
+  // roll turns counter-clockwise on the screen, y down).
+  const Eigen::Vector2d offset((box.mirrored ? -1.0 : 1.0) * calibration.eyeOffsetX * r.width,
+                               calibration.eyeOffsetY * r.width);
+  const double c = std::cos(state.pose.roll);
+  const double s = std::sin(state.pose.roll);
+  const Eigen::Vector2d target =
+      Eigen::Vector2d(r.x + 0.5 * r.width, r.y + 0.5 * r.height) +
+      Eigen::Vector2d(c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y());
   const Eigen::Vector3d mid = state.pose.rotation() * (0.5 * (left + right));
   // Eye midpoint at `depth` along -z, on the ray through `target`.
   const Eigen::Vector3d eye = camera.pixelToEye(target, depth + mid.z());

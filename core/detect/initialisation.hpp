@@ -37,7 +37,8 @@ BoxCalibration boxCalibration(DetectorKind detector, bool profile);
 
 // The mean shape posed to fill the box: depth from the calibrated eye distance, the eye midpoint
 // at its calibrated place in the box, yaw 0 for frontal boxes and the calibrated profile yaw for
-// profile boxes (positive for mirrored ones), pitch and roll 0. The planar 2D model keeps yaw 0 and
+// profile boxes (positive for mirrored ones), pitch 0 and the box's rollDeg (the calibrated eye
+// offset turned with it). The planar 2D model keeps yaw 0 and
 // takes the profile face's foreshortened size. Throws InputError for an empty or non-finite box.
 FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox& box);
 // The same with a given calibration instead of boxCalibration(box.detector, box.profile) (to

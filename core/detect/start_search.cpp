@@ -1,6 +1,7 @@
 #include "core/detect/start_search.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "core/common/error.hpp"
@@ -88,6 +89,47 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
     if (again.confidence >= best.confidence) best = std::move(again);
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
+  return best;
+}
+
+std::vector<double> tiltAngles(int steps, double stepDeg) {
+  std::vector<double> angles;
+  for (int k = 1; k <= steps; ++k) {
+    angles.push_back(-k * stepDeg);
+    angles.push_back(k * stepDeg);
+  }
+  return angles;
+}
+
+std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model,
+                                           const cv::Mat& image, FaceDetector& detector,
+                                           const std::vector<FaceBox>& faces,
+                                           const FaceSearch& search, double* detectMilliseconds) {
+  std::optional<FitResult> best;
+  bool bestIsLast = true;  // whether the fitter's last search made `best`
+  const auto consider = [&](const std::vector<FaceBox>& found) {
+    FitResult fit = fitFromBestFace(fitter, model, image, found, search);
+    bestIsLast = !best || fit.confidence > best->confidence;
+    if (bestIsLast) best = std::move(fit);
+  };
+  if (!faces.empty()) consider(faces);
+  for (const double angle : tiltAngles(search.tiltSteps, search.tiltStepDeg)) {
+    if (best && (!search.accepted || search.accepted(*best))) break;
+    const auto begin = std::chrono::steady_clock::now();
+    const std::vector<FaceBox> turned = detector.detectTurned(image, angle);
+    if (detectMilliseconds != nullptr) {
+      *detectMilliseconds +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+              .count();
+    }
+    if (!turned.empty()) consider(turned);
+  }
+  if (best && !bestIsLast) {
+    // The fitter keeps the last search's templates (the overlay draws them), as fitFromBestFace.
+    FitResult again = fitter.fit(image, best->state);
+    if (search.finish) search.finish(again);
+    if (again.confidence >= best->confidence) best = std::move(again);
+  }
   return best;
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/detect/face_detector.hpp"
@@ -55,9 +56,28 @@ struct FaceSearch {
   std::function<bool(const FitResult&)> accepted;  // empty: the first face's fit is kept
   std::function<FitState(const FitState&)> placed;
   FitFinisher finish;
+  // fitFromDetections: turns of the image searched while no fit is accepted (TrackerSettings::
+  // tiltSteps and tiltStepDeg); 0 = upright only.
+  int tiltSteps = 0;
+  double tiltStepDeg = 15.0;
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,
                           int* tried = nullptr);
+
+// The turns of a tilted-face search, nearest first: -step, +step, -2 step, +2 step, ...
+std::vector<double> tiltAngles(int steps, double stepDeg);
+
+// A still image's whole face search: fitFromBestFace over `faces` (the detector's upright boxes,
+// possibly none); then, while no fit is accepted (search.accepted; without it, only when `faces`
+// is empty), over detector.detectTurned(image, angle) for each of tiltAngles(search.tiltSteps,
+// search.tiltStepDeg) that finds a face. Returns the most confident fit, nullopt when no face was
+// found upright or turned. `detectMilliseconds`, when given, has the turned detections' time
+// added.
+std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model,
+                                           const cv::Mat& image, FaceDetector& detector,
+                                           const std::vector<FaceBox>& faces,
+                                           const FaceSearch& search,
+                                           double* detectMilliseconds = nullptr);
 
 }  // namespace clm3d

@@ -63,6 +63,8 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.refine = tracker.refine;
   settings.facesTried = tracker.facesTried;
   settings.minCheckProbability = tracker.minCheckProbability;
+  settings.tiltSteps = tracker.tiltSteps;
+  settings.tiltStepDeg = tracker.tiltStepDeg;
   return settings;
 }
 
@@ -133,11 +135,13 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       const auto begin = std::chrono::steady_clock::now();
       faces = detector().detect(lastImage_);
       outcome.detectMilliseconds = millisecondsSince(begin);
-      if (faces.empty()) {
-        outcome.status = ImageFitStatus::NoFace;
-        outcome.message = fileMessage(image, "no face found");
-        return outcome;
-      }
+    }
+    // Tilted faces are searched only where the check can tell a right fit from a wrong one.
+    const bool checked = settings_.refine && !model_->refiner.check.empty();
+    if (startPoints.empty() && faces.empty() && (!checked || settings_.tiltSteps == 0)) {
+      outcome.status = ImageFitStatus::NoFace;
+      outcome.message = fileMessage(image, "no face found");
+      return outcome;
     }
     const auto placed = [&](FitState start) {
       if (settings_.startOffset <= 0.0) return start;
@@ -151,6 +155,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       finish = [this](FitResult& fit) { refineFit(model_->refiner, lastImage_, fit); };
     }
     FitResult fit;
+    double turnedMilliseconds = 0.0;  // detection in turned copies, inside the search
     if (startPoints.empty()) {
       FaceSearch search;
       search.maxFaces = settings_.facesTried;
@@ -162,13 +167,23 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       };
       search.placed = placed;
       search.finish = finish;
-      fit = fitFromBestFace(fitter, *model_, lastImage_, faces, search);
+      search.tiltSteps = checked ? settings_.tiltSteps : 0;
+      search.tiltStepDeg = settings_.tiltStepDeg;
+      std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
+                                                         faces, search, &turnedMilliseconds);
+      outcome.detectMilliseconds += turnedMilliseconds;
+      if (!found) {
+        outcome.status = ImageFitStatus::NoFace;
+        outcome.message = fileMessage(image, "no face found, upright or tilted");
+        return outcome;
+      }
+      fit = std::move(*found);
     } else {
       fit = fitter.fit(lastImage_,
                        placed(stateFromPointsFile(*model_, fitter.camera(), startPoints)));
       if (finish) finish(fit);
     }
-    outcome.fitMilliseconds = millisecondsSince(begin);
+    outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];
       outcome.viewPitchDeg = view.pitchDeg;

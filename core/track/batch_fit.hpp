@@ -53,6 +53,9 @@ struct ImageFitSettings {
   // not written, as a tracker does not report such a frame as tracked; true writes them all the
   // same (the status stays Rejected).
   bool keepRejected = false;
+  // Tilted faces searched while no fit passes the check (TrackerSettings::tiltSteps).
+  int tiltSteps = TrackerSettings{}.tiltSteps;
+  double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,

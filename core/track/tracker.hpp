@@ -41,6 +41,13 @@ struct TrackerSettings {
   // (without a check, whose confidence would tell a wrong fit, it searches the best face only). 1 =
   // the best face only.
   int facesTried = 3;
+  // Tilted faces (`clm3d fit`): when no upright face's fit passes the point refiner's check (or no
+  // face is found), the detector runs on copies of the image turned by +-tiltStepDeg, +-2
+  // tiltStepDeg, ... (tiltSteps each way, nearest first) and searches their faces from starts
+  // tilted with them, until a fit passes (FaceDetector::detectTurned). The detectors find faces
+  // within about 15 degrees of upright. 0 = off.
+  int tiltSteps = 2;
+  double tiltStepDeg = 15.0;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
   // a probability that the points are right. The tracker uses the one matching its optimiser.

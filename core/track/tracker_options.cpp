@@ -120,6 +120,14 @@ std::vector<TrackerOption> buildOptions() {
                             "confident kept; without a check the best face only); 1 = the best "
                             "face only",
                             [](S& s) -> int& { return s.facesTried; }));
+  options.push_back(integer("tilt-steps", "Tilted-face turns", "Search", search, 0, 6,
+                            "clm3d fit: when no upright face's fit passes the point refiner's "
+                            "check, detect in copies of the image turned by this many steps each "
+                            "way and search their faces tilted (0 = off)",
+                            [](S& s) -> int& { return s.tiltSteps; }));
+  options.push_back(real("tilt-step", "Tilted-face turn step", "Search", search, 5.0, 45.0, 1,
+                         "degrees between those turns",
+                         [](S& s) -> double& { return s.tiltStepDeg; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));

@@ -127,16 +127,17 @@ struct FitScene {
   double interOcular = 0.0;      // pixels between the true points 8 and 11
 };
 
-// A render of head `head` at (pitch, yaw) degrees, 320x240, inter-ocular about `interOcularPixels`.
+// A render of head `head` at (pitch, yaw, roll) degrees, 320x240, inter-ocular about
+// `interOcularPixels`.
 inline FitScene makeFitScene(const ClmModel& model, double pitchDeg, double yawDeg, int head = 0,
-                             double interOcularPixels = 60.0) {
+                             double interOcularPixels = 60.0, double rollDeg = 0.0) {
   const SynthHead& subject = fitTestHead(head);
   FitScene scene;
   scene.camera = Camera::fromVerticalFov(320, 240, 40.0);
   const Eigen::Matrix3Xd truth3 = subject.landmarks.matrix();
   const double iodMm = (truth3.col(7) - truth3.col(10)).norm();
   const double depth = scene.camera.focalY() * iodMm / interOcularPixels;
-  scene.pose = Pose::fromDegrees(pitchDeg, yawDeg, 0.0, {4.0, -3.0, -depth});
+  scene.pose = Pose::fromDegrees(pitchDeg, yawDeg, rollDeg, {4.0, -3.0, -depth});
   OffscreenRenderer renderer(subject.mesh);
   const RenderResult render = renderer.render(scene.pose, scene.camera);
   scene.image.create(render.bgra.rows, render.bgra.cols, CV_8UC3);

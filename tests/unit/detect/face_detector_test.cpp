@@ -141,6 +141,36 @@ TEST(FaceDetector, CascadeFindsARenderedHeadAndTheStartIsNear) {
   EXPECT_THROW(FaceDetector(DetectorKind::Cascade, settings), InputError);
 }
 
+// A head tilted 35 degrees, beyond what the detectors find upright, is found in a copy of the
+// frame turned upright; the box comes back around the face with its tilt, and the start placed
+// from it is tilted too and near the truth.
+TEST(FaceDetector, ATiltedHeadIsFoundInATurnedCopyAndStartsTilted) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHeads()[test::kHeldOutHead];
+  OffscreenRenderer renderer(head.mesh);
+  const test::Scene scene = test::renderScene(renderer, head.landmarks, test::sceneCamera(), 0.0,
+                                              0.0, 35.0, {330.0, 230.0}, 55.0, 7);
+  FaceDetector detector;
+  const std::vector<FaceBox> turned = detector.detectTurned(scene.bgr, -35.0);
+  ASSERT_FALSE(turned.empty());
+  const FaceBox& best = turned.front();
+  EXPECT_EQ(best.rollDeg, 35.0);
+  EXPECT_TRUE(best.box.contains({scene.eyeMid.x(), scene.eyeMid.y()})) << best.box;
+  const FitState start = stateFromBox(model, test::sceneCamera(), best);
+  EXPECT_NEAR(degrees(start.pose.roll), 35.0, 1e-9);
+  EXPECT_LT(startError(model, scene, start), 0.2);
+  // The same box placed upright starts much further off.
+  FaceBox upright = best;
+  upright.rollDeg = 0.0;
+  EXPECT_GT(startError(model, scene, stateFromBox(model, test::sceneCamera(), upright)),
+            startError(model, scene, start) + 0.1);
+  // Turned the other way the head is at 70 degrees: no box near it is upright enough.
+  for (const FaceBox& face : detector.detectTurned(scene.bgr, 35.0)) {
+    EXPECT_FALSE(face.box.contains({scene.eyeMid.x(), scene.eyeMid.y()}) && !face.profile)
+        << face.box;
+  }
+}
+
 TEST(FaceDetector, ProfileCascadeSaysWhichWayTheHeadTurns) {
   const ClmModel& model = test::fitTestModel();
   FaceDetector detector;

@@ -50,5 +50,11 @@ TEST(StartSearch, TheGridRecoversAStartOutsideTheCaptureRange) {
   EXPECT_LT(errorOf(searched, scene), 0.5 * errorOf(alone, scene));
 }
 
+TEST(TiltAngles, NearestTurnsFirstBothWays) {
+  EXPECT_TRUE(tiltAngles(0, 15.0).empty());
+  EXPECT_EQ(tiltAngles(2, 15.0), (std::vector<double>{-15.0, 15.0, -30.0, 30.0}));
+  EXPECT_EQ(tiltAngles(1, 20.0), (std::vector<double>{-20.0, 20.0}));
+}
+
 }  // namespace
 }  // namespace clm3d

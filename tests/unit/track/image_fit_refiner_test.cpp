@@ -229,6 +229,32 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
   EXPECT_EQ(kept.output, dir / "c.pts");
 }
 
+// A head tilted 40 degrees: the detectors find no upright face (or none whose fit passes the
+// check), so `clm3d fit` detects in turned copies of the photo and searches from a tilted start.
+TEST(ImageFitRefiner, ATiltedFaceIsFoundInATurnedCopyOfThePhoto) {
+  ClmModel model = fitTestModel();
+  model.refiner = fixture().refiner;
+  const FitScene scene = makeFitScene(model, 0.0, 0.0, kHeldOutHead, 60.0, 40.0);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "tilted", scene);
+
+  ImageFitter fitter(model, ImageFitSettings{});
+  const ImageFitOutcome found = fitter.fitFile(dir / "tilted.png");
+  ASSERT_EQ(found.status, ImageFitStatus::Ok) << found.message;
+  EXPECT_GE(found.fit->confidence, 0.5);
+  EXPECT_LT(meanPointError(found.fit->points, scene.truthPoints) / scene.interOcular, 0.15)
+      << "tilted search: error "
+      << meanPointError(found.fit->points, scene.truthPoints) / scene.interOcular;
+  EXPECT_GT(degrees(found.fit->state.pose.roll), 15.0);
+
+  ImageFitSettings upright;
+  upright.tiltSteps = 0;
+  const ImageFitOutcome missed = ImageFitter(model, upright).fitFile(dir / "tilted.png");
+  EXPECT_NE(missed.status, ImageFitStatus::Ok)
+      << "found upright: error "
+      << meanPointError(missed.fit->points, scene.truthPoints) / scene.interOcular;
+}
+
 // A checked frame is reported on the check, but its 3D state starts the next frame only when the
 // search scored above its own threshold; else the next frame is detected afresh (a drifting pose
 // whose refined points are still right must not carry on).
