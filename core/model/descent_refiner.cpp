@@ -31,6 +31,14 @@ void DescentRefiner::validate(int schemeSize) const {
       fail(where + ": array sizes do not match " + std::to_string(n) + " landmarks");
     if (!stage.featureMean.allFinite() || !stage.weights.allFinite() || !stage.bias.allFinite())
       fail(where + ": values not finite");
+    if (stage.shapeWeights.size() > 0) {
+      if (stage.shapeWeights.rows() != 2 * n || stage.shapeWeights.cols() != 2 * n)
+        fail(where + ".shapeWeights must be " + std::to_string(2 * n) + " x " +
+             std::to_string(2 * n));
+      if (!stage.shapeWeights.allFinite()) fail(where + ".shapeWeights: values not finite");
+    }
+    if ((stage.shapeWeights.size() > 0) != hasShapeWeights())
+      fail(where + ": shape weights in some stages and not in others");
   }
   if (!check.empty()) {
     if (!(check.window > 0.0 && check.window <= 4.0)) fail("check.window must be in (0, 4]");

@@ -18,6 +18,10 @@ struct DescentStage {
   Eigen::VectorXf featureMean;  // subtracted before the regression
   Eigen::MatrixXf weights;      // (2 N) x features: corrections, x then y per point
   Eigen::VectorXf bias;         // 2 N
+  // (2 N) x (2 N): corrections from the current points' departure from the mean shape (in the
+  // normalised frame, x then y per point), added to the features' (format 6); empty in models
+  // written before, whose stages see the image only.
+  Eigen::MatrixXf shapeWeights;
 };
 
 // A linear score of the features at the refined points, turned into the probability that the
@@ -41,6 +45,8 @@ struct DescentRefiner {
   DescentCheck check;  // empty: the model cannot tell right refined points from wrong ones
 
   bool empty() const { return stages.empty(); }
+  // Whether the stages have shape weights (all or none do).
+  bool hasShapeWeights() const { return !stages.empty() && stages.front().shapeWeights.size() > 0; }
   // Throws Error naming the first inconsistency (sizes, indices, non-finite values); `schemeSize`
   // bounds the landmark indices. An empty refiner is valid; a check needs stages.
   void validate(int schemeSize) const;

@@ -187,7 +187,8 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
 }
 
 // The "refiner" member of the header (version 4; absent when the model has none), with its
-// "check" (version 5; absent when the refiner has none).
+// "check" (version 5; absent when the refiner has none) and "shapeWeights" (version 6; true when
+// its stages have shape weights, absent otherwise).
 json refinerJson(const DescentRefiner& refiner) {
   json windows = json::array();
   for (const DescentStage& stage : refiner.stages) windows.push_back(stage.window);
@@ -195,6 +196,7 @@ json refinerJson(const DescentRefiner& refiner) {
               {"leftEye", refiner.leftEye},
               {"rightEye", refiner.rightEye},
               {"windows", windows}};
+  if (refiner.hasShapeWeights()) out["shapeWeights"] = true;
   if (!refiner.check.empty()) {
     const DescentCheck& check = refiner.check;
     out["check"] = {{"window", check.window},
@@ -296,6 +298,8 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       addValues(floats, d, 2, check.path());
       out.weights.resize(1);  // marks the check present; sized once the byte count is checked
     }
+    // Version 6: each stage's shape weights, after its bias.
+    const bool shapeWeights = version >= 6 && refiner.boolean("shapeWeights", false);
     refiner.rejectUnknown();
     addValues(doubles, 2 * static_cast<std::uint64_t>(n), 1, refiner.path());
     for (const Header& window : windows) {
@@ -304,6 +308,12 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       stage.window = window.get<double>();  // arrays sized once the byte count is checked
       addValues(floats, d, 1 + 2 * static_cast<std::uint64_t>(n), refiner.path());
       addValues(floats, 2 * static_cast<std::uint64_t>(n), 1, refiner.path());
+      if (shapeWeights) {
+        addValues(floats, 2 * static_cast<std::uint64_t>(n), 2 * static_cast<std::uint64_t>(n),
+                  refiner.path());
+        stage.shapeWeights.resize(1,
+                                  1);  // marks them present; sized once the byte count is checked
+      }
       model.refiner.stages.push_back(std::move(stage));
     }
   }
@@ -477,6 +487,10 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readArray(reader, stage.featureMean);
       readArray(reader, stage.weights);
       readArray(reader, stage.bias);
+      if (stage.shapeWeights.size() > 0) {
+        stage.shapeWeights.resize(2 * n, 2 * n);
+        readArray(reader, stage.shapeWeights);
+      }
     }
     if (!model.refiner.check.empty()) {
       model.refiner.check.featureMean.resize(d);
@@ -572,6 +586,7 @@ std::string serializeModel(const ClmModel& model) {
       appendFloats(payload, stage.featureMean);
       appendFloats(payload, stage.weights);
       appendFloats(payload, stage.bias);
+      if (model.refiner.hasShapeWeights()) appendFloats(payload, stage.shapeWeights);
     }
     if (!model.refiner.check.empty()) {
       appendFloats(payload, model.refiner.check.featureMean);

@@ -19,8 +19,9 @@ namespace clm3d {
 // 3: experts of several units (a scale's "expertUnits"; weights, biases and unit weights).
 // 4: an optional point refiner (header "refiner"; its arrays after the views').
 // 5: the refiner's optional check (refiner "check"; its two arrays after the stages').
-// Version 1 files (no experts, every view stored) and versions 2 to 4 still load.
-inline constexpr std::uint32_t kModelFormatVersion = 5;
+// 6: the refiner stages' optional shape weights (refiner "shapeWeights"; after each stage's bias).
+// Version 1 files (no experts, every view stored) and versions 2 to 5 still load.
+inline constexpr std::uint32_t kModelFormatVersion = 6;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

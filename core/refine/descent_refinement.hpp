@@ -74,6 +74,9 @@ struct DescentTrainSettings {
   // by a share drawn uniformly from [0, otherShape]: a search leaves the shape model's idea of the
   // face, not only a misplaced copy of the true one. 0 = the true shape, moved only.
   double otherShape = 0.0;
+  // Each stage also regresses from the points' departure from the mean shape
+  // (DescentStage::shapeWeights), not only from the image.
+  bool shapeTerms = false;
   std::uint64_t seed = 1;
   int threads = 0;
 };

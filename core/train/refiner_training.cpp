@@ -106,6 +106,7 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   }
   train.ridge = kRidge;
   train.otherShape = kOtherShape;
+  train.shapeTerms = true;
   train.startsPerPhoto = settings.refinerStarts;
   train.seed = settings.seed;
   train.threads = settings.threads;

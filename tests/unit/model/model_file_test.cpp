@@ -416,6 +416,34 @@ TEST(ModelFile, RefinerCheckRoundTrips) {
   EXPECT_TRUE(old.refiner.check.empty());
 }
 
+// Version 6: the stages' shape weights are stored after each stage's bias and read back exactly;
+// a refiner without them writes no "shapeWeights" key, and a version 5 file (the fuzz corpus's
+// tiny-check-v5.clm3d) loads with stages that have none.
+TEST(ModelFile, RefinerShapeWeightsRoundTrip) {
+  ClmModel model = tinyModelWithRefiner();
+  EXPECT_EQ(headerOf(serializeModel(model)).find("shapeWeights"), std::string::npos);
+  model.refiner.stages[0].shapeWeights = Eigen::MatrixXf::Identity(6, 6) * -0.25f;
+  model.refiner.stages[0].shapeWeights(1, 4) = 0.125f;
+  const std::string bytes = serializeModel(model);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  ASSERT_TRUE(loaded.refiner.hasShapeWeights());
+  EXPECT_EQ(loaded.refiner.stages[0].shapeWeights, model.refiner.stages[0].shapeWeights);
+  // The flag without its arrays.
+  expectEditsRefused(bytes, "\"refiner\"",
+                     {{"\"shapeWeights\":true", "\"shapeWeights\":false", "bytes of arrays"}});
+  // A stage with shape weights of the wrong size.
+  model.refiner.stages[0].shapeWeights.resize(4, 4);
+  EXPECT_THROW(serializeModel(model), Error);
+
+  const std::filesystem::path v5 = std::filesystem::path(CLM3D_TEST_FIXTURES) /
+                                   "../fuzz/corpus/fuzz_model_file/tiny-check-v5.clm3d";
+  ASSERT_EQ(modelFileVersion(v5), 5u);
+  const ClmModel old = loadModel(v5);
+  EXPECT_FALSE(old.refiner.empty());
+  EXPECT_FALSE(old.refiner.hasShapeWeights());
+}
+
 // A file of format version 2 (one linear filter, gain and bias per expert: the fuzz corpus's
 // tiny-experts.clm3d, written by clm3d 0.2) loads as one-unit experts with the gain folded into
 // the filter, so its responses are unchanged, and is written back as version 3.
