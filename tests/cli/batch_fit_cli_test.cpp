@@ -1,7 +1,8 @@
 // clm3d fit over many images through the real binary (core/track/batch_fit): a folder of
 // procedural-head renders with an unreadable image and a faceless one among them (an error row and
 // a no-face row, the batch goes on, exit 1 at the end), a list file with comments, relative paths
-// and start points from --init-dir (exit 0), and the usage errors of mixing the two modes.
+// and start points from --init-dir (exit 0), the usage errors of mixing the two modes, and a fit
+// the model's point check rejects (no points unless --keep-rejected; a rejected row in a batch).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 #include "tests/support/fit_fixture.hpp"
+#include "tests/support/refiner_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -176,6 +178,50 @@ TEST(BatchFitCli, ModesAreMutuallyExclusiveAndBadFoldersNameThemselves) {
                              (f.dir / "o").string());
   EXPECT_EQ(none.exitCode, 1) << none.output;
   EXPECT_TRUE(test::contains(none.output, "empty-list.txt")) << none.output;
+}
+
+// A model with a point check, searching a photo of noise from a face's points: the check rejects
+// the fit. One image exits 1 naming the reason and writes no points, unless --keep-rejected; in a
+// batch it is a rejected row and the batch exits 0.
+TEST(BatchFitCli, AFitTheCheckRejectsWritesNoPointsUnlessKept) {
+  const test::TempDir dir;
+  ClmModel model = test::fitTestModel();
+  model.refiner = test::photoRefiner();
+  const fs::path modelPath = dir / "checked.clm3d";
+  saveModel(model, modelPath);
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0, test::kHeldOutHead);
+  const fs::path images = dir / "images";
+  const fs::path starts = dir / "starts";
+  fs::create_directories(images);
+  fs::create_directories(starts);
+  test::savePhoto(starts, "noise", scene);  // the face's points as noise.pts
+  fs::remove(starts / "noise.png");
+  cv::Mat noise(scene.image.size(), scene.image.type());
+  cv::randu(noise, 0, 255);
+  writeImage(images / "noise.png", noise);
+
+  const std::string single = "fit --model " + modelPath.string() + " --image " +
+                             (images / "noise.png").string() + " --init " +
+                             (starts / "noise.pts").string() + " --out ";
+  const auto refused = runClm3d(single + (dir / "a.pts").string());
+  EXPECT_EQ(refused.exitCode, 1) << refused.output;
+  EXPECT_TRUE(test::contains(refused.output, "noise.png")) << refused.output;
+  EXPECT_TRUE(test::contains(refused.output, "rejects the fit")) << refused.output;
+  EXPECT_FALSE(fs::exists(dir / "a.pts"));
+  const auto kept = runClm3d(single + (dir / "b.pts").string() + " --keep-rejected");
+  EXPECT_EQ(kept.exitCode, 0) << kept.output;
+  EXPECT_TRUE(test::contains(kept.output, "warning:")) << kept.output;
+  EXPECT_TRUE(fs::exists(dir / "b.pts"));
+
+  const fs::path out = dir / "batch";
+  const auto batch = runClm3d("fit --model " + modelPath.string() + " --images " + images.string() +
+                              " --init-dir " + starts.string() + " --out-dir " + out.string());
+  EXPECT_EQ(batch.exitCode, 0) << batch.output;
+  EXPECT_TRUE(test::contains(batch.output, "1 rejected by the point check")) << batch.output;
+  EXPECT_FALSE(fs::exists(out / "noise.pts"));
+  const std::vector<std::string> rows = lines(test::readFile(out / "summary.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_TRUE(test::contains(rows[1], ",rejected,")) << rows[1];
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "core/train/refiner_training.hpp"
 #include "core/viz/image_file.hpp"
 #include "tests/support/fit_fixture.hpp"
+#include "tests/support/refiner_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -33,52 +34,10 @@ using test::kHeldOutHead;
 using test::makeFitScene;
 using test::meanPointError;
 
-// Writes the scene as DIR/NAME.png with its true points in NAME.pts; returns it as a photo.
-TrainingPhoto savePhoto(const fs::path& dir, const std::string& name, const FitScene& scene) {
-  TrainingPhoto photo;
-  photo.id = name + ".png";
-  photo.image = dir / photo.id;
-  writeImage(photo.image, scene.image);
-  photo.points = LandmarkSet(static_cast<int>(scene.truthPoints.cols()), 2);
-  for (int i = 0; i < photo.points.size(); ++i)
-    photo.points.set(i, Eigen::Vector2d(scene.truthPoints.col(i)));
-  photo.trusted.assign(static_cast<std::size_t>(photo.points.size()), true);
-  writeLandmarks(dir / (name + ".pts"), photo.points, Scheme::thesis25());
-  return photo;
-}
-
-struct RefinerFixture {
-  test::TempDir dir;
-  DescentRefiner refiner;
-  RefinerFixture() {
-    std::vector<TrainingPhoto> photos;
-    for (int head = 0; head < 4; ++head) {
-      for (const auto& [pitch, yaw] : {std::pair{0.0, -8.0},
-                                       {5.0, 0.0},
-                                       {-5.0, 6.0},
-                                       {0.0, 12.0},
-                                       {3.0, -3.0},
-                                       {-3.0, -12.0}}) {
-        photos.push_back(savePhoto(
-            dir.path(), "h" + std::to_string(head) + "-" + std::to_string(static_cast<int>(yaw)),
-            makeFitScene(fitTestModel(), pitch, yaw, head)));
-      }
-    }
-    TrainSettings settings;
-    settings.refinerStages = 3;
-    settings.refinerStarts = 12;
-    settings.threads = 2;
-    refiner = trainPhotoRefiner(photos, Scheme::thesis25(), settings);
-  }
-};
-
-const RefinerFixture& fixture() {
-  static const RefinerFixture f;
-  return f;
-}
+using test::savePhoto;
 
 TEST(ImageFitRefiner, TrainedFromPhotosItBringsStartsCloserOnAHeldOutHead) {
-  const DescentRefiner& refiner = fixture().refiner;
+  const DescentRefiner& refiner = test::photoRefiner();
   ASSERT_EQ(refiner.stages.size(), 3u);
   EXPECT_EQ(refiner.landmarks.size(), 25u);  // every point is marked in every photo
   EXPECT_EQ(refiner.landmarks[static_cast<std::size_t>(refiner.leftEye)], 7);
@@ -103,7 +62,7 @@ TEST(ImageFitRefiner, TrainedFromPhotosItBringsStartsCloserOnAHeldOutHead) {
 
 TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);  // face.png, and its true points in face.pts: the start
@@ -127,7 +86,7 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
 
 TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead);
   const auto trackOnce = [&](bool refine) {
     TrackerSettings settings;
@@ -149,7 +108,7 @@ TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
 
 TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   ASSERT_FALSE(model.refiner.check.empty()) << "48 faces learn a check";
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
@@ -198,7 +157,7 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
 // written unless asked for: a photo of noise, searched from the face's points.
 TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);
@@ -233,7 +192,7 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
 // check), so `clm3d fit` detects in turned copies of the photo and searches from a tilted start.
 TEST(ImageFitRefiner, ATiltedFaceIsFoundInATurnedCopyOfThePhoto) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 0.0, kHeldOutHead, 60.0, 40.0);
   const test::TempDir dir;
   savePhoto(dir.path(), "tilted", scene);
@@ -260,7 +219,7 @@ TEST(ImageFitRefiner, ATiltedFaceIsFoundInATurnedCopyOfThePhoto) {
 // whose refined points are still right must not carry on).
 TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   const auto twoFrames = [&](double minConfidence) {
     TrackerSettings settings;
@@ -286,7 +245,7 @@ TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
 // cannot find (here smaller than its smallest box) is searched from it and still tracked.
 TEST(ImageFitRefiner, WhenTheDetectorFindsNoFaceTheDoubtedStateIsSearched) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead, 17.0);
   FaceDetector detector;
   ASSERT_TRUE(detector.detect(scene.image).empty()) << "the premise: no face found";
@@ -312,7 +271,7 @@ TEST(ImageFitRefiner, WhenTheDetectorFindsNoFaceTheDoubtedStateIsSearched) {
 // fit the next face is searched, and the most confident fit is kept.
 TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   ClmModel model = fitTestModel();
-  model.refiner = fixture().refiner;
+  model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   // The face's box as the detector's calibration places it, and a smaller one on the background.
   const BoxCalibration calibration = boxCalibration(DetectorKind::Cascade, false);
