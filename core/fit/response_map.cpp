@@ -6,6 +6,7 @@
 
 #include "core/common/error.hpp"
 #include "core/fit/window_dots.hpp"
+#include "core/image/patch_sampling.hpp"
 
 namespace clm3d {
 
@@ -62,8 +63,6 @@ void sampleRegion(const cv::Mat& image, const Eigen::Vector2d& centre, double an
   float* __restrict weightY = scratchY.data();
   int* __restrict columns = scratchColumns.data();
   int* __restrict rowsAt = scratchRows.data();
-  const float maxX = static_cast<float>(image.cols - 1);
-  const float maxY = static_cast<float>(image.rows - 1);
   for (int v = 0; v < size; ++v) {
     float* __restrict row = out.ptr<float>(v);
     const auto rowX = static_cast<float>(originX + v * s);
@@ -88,21 +87,9 @@ void sampleRegion(const cv::Mat& image, const Eigen::Vector2d& centre, double an
       }
       continue;
     }
-    // Near the border: positions clamped to the image, the last row and column repeated.
+    // Near the border (rare): samplePatch's clamped sampler, the border pixels repeated.
     for (int u = 0; u < size; ++u) {
-      const float x = std::clamp(rowX + static_cast<float>(u) * stepX, 0.0f, maxX);
-      const float y = std::clamp(rowY + static_cast<float>(u) * stepY, 0.0f, maxY);
-      const int x0 = static_cast<int>(x);
-      const int y0 = static_cast<int>(y);
-      const int x1 = std::min(x0 + 1, image.cols - 1);
-      const int y1 = std::min(y0 + 1, image.rows - 1);
-      const float fx = x - static_cast<float>(x0);
-      const float fy = y - static_cast<float>(y0);
-      const float* top = pixels + static_cast<std::size_t>(y0) * step;
-      const float* bottom = pixels + static_cast<std::size_t>(y1) * step;
-      const float upper = top[x0] + fx * (top[x1] - top[x0]);
-      const float lower = bottom[x0] + fx * (bottom[x1] - bottom[x0]);
-      row[u] = upper + fy * (lower - upper);
+      row[u] = sampleBilinear(image, originX + u * c + v * s, originY - u * s + v * c);
     }
   }
 }

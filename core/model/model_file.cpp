@@ -311,8 +311,8 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       if (shapeWeights) {
         addValues(floats, 2 * static_cast<std::uint64_t>(n), 2 * static_cast<std::uint64_t>(n),
                   refiner.path());
-        stage.shapeWeights.resize(1,
-                                  1);  // marks them present; sized once the byte count is checked
+        // Marks them present; sized once the byte count is checked.
+        stage.shapeWeights.resize(1, 1);
       }
       model.refiner.stages.push_back(std::move(stage));
     }
