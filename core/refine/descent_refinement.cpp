@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <string>
@@ -133,8 +134,28 @@ Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& re
   return points;
 }
 
+Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
+                                const Eigen::Matrix2Xd& start, const RefinerStarts& starts) {
+  Eigen::Matrix2Xd sum = refineInRegion(refiner, regionGrey, start);
+  const int extra = std::max(0, starts.extra);
+  if (extra == 0) return sum;
+  const double eyeDistance = (start.col(refiner.leftEye) - start.col(refiner.rightEye)).norm();
+  const Eigen::Vector2d centroid = start.rowwise().mean();
+  for (int k = 0; k < extra; ++k) {
+    const double angle = 2.0 * std::numbers::pi * k / extra;
+    const double scale = k % 2 == 0 ? 1.0 + starts.spread : 1.0 - starts.spread;
+    const Eigen::Vector2d shift =
+        starts.spread * eyeDistance * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const Eigen::Matrix2Xd moved =
+        (((start.colwise() - centroid) * scale).colwise() + centroid).colwise() + shift;
+    sum += refineInRegion(refiner, regionGrey, moved);
+  }
+  return sum / static_cast<double>(extra + 1);
+}
+
 RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image,
-                             const Eigen::Matrix2Xd& points, bool check) {
+                             const Eigen::Matrix2Xd& points, bool check,
+                             const RefinerStarts& starts) {
   RefinedPoints out{points};
   if (refiner.empty()) return out;
   const std::vector<int>& landmarks = refiner.landmarks;
@@ -146,7 +167,7 @@ RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image
   if (!start.allFinite()) return out;
   const DescentRegion region = descentRegion(image, start, refiner.leftEye, refiner.rightEye);
   const Eigen::Matrix2Xd refinedInRegion =
-      refineInRegion(refiner, region.grey, region.toRegion(start));
+      refineInRegion(refiner, region.grey, region.toRegion(start), starts);
   if (check) out.rightProbability = checkInRegion(refiner, region.grey, refinedInRegion);
   const Eigen::Matrix2Xd refined = region.toImage(refinedInRegion);
   for (std::size_t i = 0; i < landmarks.size(); ++i)

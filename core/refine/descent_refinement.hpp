@@ -44,11 +44,26 @@ struct RefinedPoints {
   double rightProbability = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Every scheme landmark of `points` with the refiner's points moved by every stage and, when
-// `check` is set and the refiner has one, checked; `image` as descentRegion takes it. The points
-// are returned unchanged when the refiner is empty or one of its points is not finite.
+// Refining from several starts and averaging (test-time averaging): the cascade also runs from
+// `extra` copies of the start, each moved `spread` eye distances in one of `extra` evenly spaced
+// directions (the first to the right, turning from x towards y) and scaled about the points'
+// centroid by 1 + spread (even copies) or 1 - spread (odd ones); the refined points are the mean
+// of all the runs. The linear stages' errors from nearby starts partly cancel: on 100 LFPW
+// training photos held out of the model, 8 extra starts took the mean error from 0.0458 to 0.0452
+// from the detector and from 0.0455 to 0.0452 from the truth's 5 points (docs/real-faces.md), for
+// about 1 ms per start. extra 0 = the start alone.
+struct RefinerStarts {
+  int extra = 0;
+  double spread = 0.04;
+};
+
+// Every scheme landmark of `points` with the refiner's points moved by every stage (from the
+// starts of `starts`, averaged) and, when `check` is set and the refiner has one, checked; `image`
+// as descentRegion takes it. The points are returned unchanged when the refiner is empty or one of
+// its points is not finite.
 RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image,
-                             const Eigen::Matrix2Xd& points, bool check = true);
+                             const Eigen::Matrix2Xd& points, bool check = true,
+                             const RefinerStarts& starts = {});
 inline Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Mat& image,
                                      const Eigen::Matrix2Xd& points) {
   return refineAndCheck(refiner, image, points, false).points;
@@ -56,6 +71,9 @@ inline Eigen::Matrix2Xd refinePoints(const DescentRefiner& refiner, const cv::Ma
 // The refiner's points only (2 x N, region pixels) after every stage, from `start`.
 Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                                 const Eigen::Matrix2Xd& start);
+// The mean of refineInRegion from `start` and from the moved copies of `starts`.
+Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
+                                const Eigen::Matrix2Xd& start, const RefinerStarts& starts);
 
 // One annotated face to train from: its region and true points (2 x N, region pixels).
 struct DescentPhoto {

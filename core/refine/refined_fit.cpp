@@ -2,13 +2,12 @@
 
 #include <cmath>
 
-#include "core/refine/descent_refinement.hpp"
-
 namespace clm3d {
 
-void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit) {
+void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit,
+               const RefinerStarts& starts) {
   if (refiner.empty()) return;
-  RefinedPoints refined = refineAndCheck(refiner, image, fit.points);
+  RefinedPoints refined = refineAndCheck(refiner, image, fit.points, true, starts);
   fit.points = std::move(refined.points);
   if (std::isfinite(refined.rightProbability)) {
     fit.searchConfidence = fit.searchScore();

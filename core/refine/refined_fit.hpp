@@ -9,10 +9,13 @@
 
 #include "core/fit/fitter.hpp"
 #include "core/model/descent_refiner.hpp"
+#include "core/refine/descent_refinement.hpp"
 
 namespace clm3d {
 
-// Refines `fit` in place (nothing changes when the refiner is empty); `image` is the searched one.
-void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit);
+// Refines `fit` in place (nothing changes when the refiner is empty); `image` is the searched one,
+// `starts` as refineAndCheck takes them.
+void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit,
+               const RefinerStarts& starts = {});
 
 }  // namespace clm3d

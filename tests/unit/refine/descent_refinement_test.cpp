@@ -219,6 +219,40 @@ TEST(DescentCheck, TellsRightRefinedPointsFromWrongOnes) {
   EXPECT_THROW(trainDescentCheck(drawnPhotos(4, 3), refiner, settings), InputError);
 }
 
+// Refining from several starts: the mean of the cascade's runs from the start and from its copies
+// moved spread eye distances round a circle and scaled alternately up and down by spread; 0 extra
+// starts is the start alone, and the averaged points still land on the face.
+TEST(DescentRefinement, MoreStartsAverageTheRunsFromCopiesMovedAroundTheStart) {
+  const DescentRefiner& refiner = trainedRefiner();
+  std::mt19937_64 random(31);
+  const DrawnFace face = drawFace(random);
+  const Eigen::Matrix2Xd start = offStart(face.points, random);
+  const DescentRegion region = descentRegion(face.image, start, 0, 1);
+  const Eigen::Matrix2Xd inRegion = region.toRegion(start);
+  EXPECT_EQ(refineInRegion(refiner, region.grey, inRegion, RefinerStarts{0, 0.04}),
+            refineInRegion(refiner, region.grey, inRegion));
+
+  const RefinerStarts starts{4, 0.05};
+  const double eyes = (inRegion.col(0) - inRegion.col(1)).norm();
+  const Eigen::Vector2d centroid = inRegion.rowwise().mean();
+  const Eigen::Vector2d shifts[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  const double scales[4] = {1.05, 0.95, 1.05, 0.95};
+  Eigen::Matrix2Xd sum = refineInRegion(refiner, region.grey, inRegion);
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Matrix2Xd moved = ((inRegion.colwise() - centroid) * scales[k]).colwise() +
+                                   (centroid + 0.05 * eyes * shifts[k]);
+    sum += refineInRegion(refiner, region.grey, moved);
+  }
+  const Eigen::Matrix2Xd averaged = refineInRegion(refiner, region.grey, inRegion, starts);
+  EXPECT_TRUE(averaged.isApprox(sum / 5.0, 1e-9));
+  EXPECT_FALSE(averaged.isApprox(refineInRegion(refiner, region.grey, inRegion), 1e-6));
+
+  const Eigen::Matrix2Xd refined = refinersPoints(
+      refineAndCheck(refiner, face.image, schemePoints(start), false, starts).points);
+  EXPECT_TRUE(refined.isApprox(region.toImage(averaged), 1e-9));
+  EXPECT_LT(meanError(refined, face.points), 0.5 * meanError(start, face.points));
+}
+
 TEST(DescentRefinement, TrainingDoesNotDependOnTheThreadCount) {
   const std::vector<DescentPhoto> photos = drawnPhotos(6, 5);
   DescentTrainSettings settings;
