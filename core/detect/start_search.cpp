@@ -124,6 +124,12 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
     }
     if (!turned.empty()) consider(turned);
   }
+  if (best && best->confidence < search.widerBelow) {
+    FitResult wider =
+        fitFromBestStart(fitter, model, image, best->state, search.wider, nullptr, search.finish);
+    bestIsLast = wider.confidence > best->confidence;
+    if (bestIsLast) best = std::move(wider);
+  }
   if (best && !bestIsLast) {
     // The fitter keeps the last search's templates (the overlay draws them), as fitFromBestFace.
     FitResult again = fitter.fit(image, best->state);

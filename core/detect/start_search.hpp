@@ -60,6 +60,11 @@ struct FaceSearch {
   // tiltSteps and tiltStepDeg); 0 = upright only.
   int tiltSteps = 0;
   double tiltStepDeg = 15.0;
+  // fitFromDetections: a kept fit whose confidence is below widerBelow is searched again from the
+  // starts of `wider` around its own state (moved and rescaled copies: a face the detector boxed
+  // too small or too large), and the more confident fit kept. 0 = never.
+  double widerBelow = 0.0;
+  StartSearchSettings wider{1, 0.15, {0.8, 1.25}};
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,
@@ -71,9 +76,10 @@ std::vector<double> tiltAngles(int steps, double stepDeg);
 // A still image's whole face search: fitFromBestFace over `faces` (the detector's upright boxes,
 // possibly none); then, while no fit is accepted (search.accepted; without it, only when `faces`
 // is empty), over detector.detectTurned(image, angle) for each of tiltAngles(search.tiltSteps,
-// search.tiltStepDeg) that finds a face. Returns the most confident fit, nullopt when no face was
-// found upright or turned. `detectMilliseconds`, when given, has the turned detections' time
-// added.
+// search.tiltStepDeg) that finds a face; then, when the most confident fit's confidence is below
+// search.widerBelow, fitFromBestStart from its state with search.wider. Returns the most confident
+// fit, nullopt when no face was found upright or turned. `detectMilliseconds`, when given, has the
+// turned detections' time added.
 std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model,
                                            const cv::Mat& image, FaceDetector& detector,
                                            const std::vector<FaceBox>& faces,

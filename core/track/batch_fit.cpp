@@ -65,6 +65,8 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.minCheckProbability = tracker.minCheckProbability;
   settings.tiltSteps = tracker.tiltSteps;
   settings.tiltStepDeg = tracker.tiltStepDeg;
+  settings.widerSearchBelow = tracker.widerSearchBelow;
+  settings.refinerStarts = tracker.refinerStarts;
   return settings;
 }
 
@@ -171,6 +173,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       search.finish = finish;
       search.tiltSteps = checked ? settings_.tiltSteps : 0;
       search.tiltStepDeg = settings_.tiltStepDeg;
+      search.widerBelow = checked ? settings_.widerSearchBelow : 0.0;
       std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
                                                          faces, search, &turnedMilliseconds);
       outcome.detectMilliseconds += turnedMilliseconds;
@@ -184,6 +187,12 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       fit = fitter.fit(lastImage_,
                        placed(stateFromPointsFile(*model_, fitter.camera(), startPoints)));
       if (finish) finish(fit);
+    }
+    if (settings_.refine && settings_.refinerStarts > 0 && !model_->refiner.empty()) {
+      // The starts were compared by a refinement from one start each; the kept fit's points are
+      // refined again from the search's own, now from several starts.
+      fit.points = fitter.project(fit.state);
+      refineFit(model_->refiner, lastImage_, fit, RefinerStarts{settings_.refinerStarts});
     }
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {

@@ -56,6 +56,10 @@ struct ImageFitSettings {
   // Tilted faces searched while no fit passes the check (TrackerSettings::tiltSteps).
   int tiltSteps = TrackerSettings{}.tiltSteps;
   double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
+  // Fits the check is unsure of searched again, wider (TrackerSettings::widerSearchBelow).
+  double widerSearchBelow = TrackerSettings{}.widerSearchBelow;
+  // The kept fit's points refined from more starts, averaged (TrackerSettings::refinerStarts).
+  int refinerStarts = TrackerSettings{}.refinerStarts;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,

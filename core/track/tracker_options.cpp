@@ -128,6 +128,17 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(real("tilt-step", "Tilted-face turn step", "Search", search, 5.0, 45.0, 1,
                          "degrees between those turns",
                          [](S& s) -> double& { return s.tiltStepDeg; }));
+  options.push_back(real("wider-search-below", "Wider search below (check)", "Search", search, 0.0,
+                         1.0, 2,
+                         "clm3d fit: a fit whose point check gives a probability below this is "
+                         "searched again from copies of it moved 0.15 eye distances and scaled by "
+                         "0.8 and 1.25, the more confident fit kept (0 = never)",
+                         [](S& s) -> double& { return s.widerSearchBelow; }));
+  options.push_back(integer("refiner-starts", "Refiner starts", "Search", search, 0, 32,
+                            "clm3d fit: the fit's points are also refined from this many copies "
+                            "of them moved 0.04 eye distances around, and the refined points "
+                            "averaged (0 = from the fit's points alone)",
+                            [](S& s) -> int& { return s.refinerStarts; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));

@@ -77,11 +77,24 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   const ImageFitOutcome refined =
       refining.fitFile(dir / "face.png", dir / "face.pts", dir / "out.pts");
   ASSERT_EQ(refined.status, ImageFitStatus::Ok) << refined.message;
-  const Eigen::Matrix2Xd expected = refinePoints(model.refiner, scene.image, searched.fit->points);
+  // The search's points refined from the default 8 more starts, averaged.
+  const RefinerStarts starts{ImageFitSettings{}.refinerStarts};
+  ASSERT_EQ(starts.extra, 8);
+  const Eigen::Matrix2Xd expected =
+      refineAndCheck(model.refiner, scene.image, searched.fit->points, false, starts).points;
   EXPECT_TRUE(refined.fit->points.isApprox(expected, 1e-9));
   EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 0.0);
   const LandmarkSet written = readLandmarks(dir / "out.pts", &Scheme::thesis25());
   EXPECT_NEAR(written.point(12).x(), expected(0, 12), 1e-3);
+  // From the search's points alone.
+  ImageFitSettings oneStart;
+  oneStart.refinerStarts = 0;
+  const ImageFitOutcome single =
+      ImageFitter(model, oneStart).fitFile(dir / "face.png", dir / "face.pts");
+  ASSERT_EQ(single.status, ImageFitStatus::Ok) << single.message;
+  EXPECT_TRUE(single.fit->points.isApprox(
+      refinePoints(model.refiner, scene.image, searched.fit->points), 1e-9));
+  EXPECT_FALSE(single.fit->points.isApprox(expected, 1e-6));
 }
 
 TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
@@ -127,7 +140,9 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
       ImageFitter(model, plain).fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
   EXPECT_NEAR(right.fit->confidence,
-              refineAndCheck(model.refiner, scene.image, searched.fit->points).rightProbability,
+              refineAndCheck(model.refiner, scene.image, searched.fit->points, true,
+                             RefinerStarts{ImageFitSettings{}.refinerStarts})
+                  .rightProbability,
               1e-9);
   // Points moved by most of an eye distance stay wrong after refining, and the check says so.
   for (const Eigen::Vector2d& share : {Eigen::Vector2d(0.7, 0.4), Eigen::Vector2d(-0.6, -0.6)}) {
@@ -267,6 +282,18 @@ TEST(ImageFitRefiner, WhenTheDetectorFindsNoFaceTheDoubtedStateIsSearched) {
   EXPECT_FALSE(tracker.track(scene.image, 3, 0.12).row.success);
 }
 
+// The face's box as the detector's calibration places it around the scene's eyes, its side
+// `share` of the calibrated one.
+FaceBox calibratedBox(const FitScene& scene, double share = 1.0) {
+  const BoxCalibration calibration = boxCalibration(DetectorKind::Cascade, false);
+  const Eigen::Vector2d eyes = 0.5 * (scene.truthPoints.col(7) + scene.truthPoints.col(10));
+  const double width = share * scene.interOcular / calibration.iodPerWidth;
+  FaceBox face;
+  face.box = cv::Rect2d(eyes.x() - (0.5 + calibration.eyeOffsetX) * width,
+                        eyes.y() - (0.5 + calibration.eyeOffsetY) * width, width, width);
+  return face;
+}
+
 // A false detection ranked first costs a search, not the face: while the check rejects a face's
 // fit the next face is searched, and the most confident fit is kept.
 TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
@@ -274,12 +301,8 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   // The face's box as the detector's calibration places it, and a smaller one on the background.
-  const BoxCalibration calibration = boxCalibration(DetectorKind::Cascade, false);
-  const Eigen::Vector2d eyes = 0.5 * (scene.truthPoints.col(7) + scene.truthPoints.col(10));
-  const double width = scene.interOcular / calibration.iodPerWidth;
-  FaceBox face;
-  face.box = cv::Rect2d(eyes.x() - (0.5 + calibration.eyeOffsetX) * width,
-                        eyes.y() - (0.5 + calibration.eyeOffsetY) * width, width, width);
+  const FaceBox face = calibratedBox(scene);
+  const double width = face.box.width;
   FaceBox background;
   background.box = cv::Rect2d(8.0, 90.0, 0.45 * width, 0.45 * width);
   ASSERT_LT(background.box.br().x, face.box.x) << "the two boxes must not overlap";
@@ -309,6 +332,35 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
   EXPECT_EQ(tried, 1);
   EXPECT_THROW(fitFromBestFace(fitter, model, scene.image, {}, search), InputError);
+}
+
+// A face the detector boxed too small: the fit from it is one the check doubts, and with
+// widerBelow it is searched again from moved and rescaled copies of itself, which find the face.
+TEST(ImageFitRefiner, AFitTheCheckDoubtsIsSearchedAgainFromRescaledStarts) {
+  ClmModel model = fitTestModel();
+  model.refiner = test::photoRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
+  const FaceBox face = calibratedBox(scene, 0.6);
+
+  Fitter fitter(model, scene.camera, FitSettings{});
+  FaceDetector detector;  // not used: the face is given and no tilted copy is searched
+  FaceSearch search;
+  search.finish = [&](FitResult& fit) { refineFit(model.refiner, scene.image, fit); };
+  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  const auto error = [&](const FitResult& fit) {
+    return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
+  };
+  const std::optional<FitResult> narrow =
+      fitFromDetections(fitter, model, scene.image, detector, {face}, search);
+  ASSERT_TRUE(narrow.has_value());
+  ASSERT_LT(narrow->confidence, 0.97) << "the premise: the check doubts the fit";
+  ASSERT_GT(error(*narrow), 0.15) << "the premise: the fit is off";
+  search.widerBelow = 0.97;
+  const std::optional<FitResult> wider =
+      fitFromDetections(fitter, model, scene.image, detector, {face}, search);
+  ASSERT_TRUE(wider.has_value());
+  EXPECT_GT(wider->confidence, narrow->confidence);
+  EXPECT_LT(error(*wider), 0.1);
 }
 
 }  // namespace
