@@ -66,7 +66,7 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.tiltSteps = tracker.tiltSteps;
   settings.tiltStepDeg = tracker.tiltStepDeg;
   settings.widerSearchBelow = tracker.widerSearchBelow;
-  settings.refinerStarts = tracker.refinerStarts;
+  settings.refineRuns = tracker.refineRuns;
   return settings;
 }
 
@@ -188,11 +188,11 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
                        placed(stateFromPointsFile(*model_, fitter.camera(), startPoints)));
       if (finish) finish(fit);
     }
-    if (settings_.refine && settings_.refinerStarts > 0 && !model_->refiner.empty()) {
+    if (settings_.refine && settings_.refineRuns > 1 && !model_->refiner.empty()) {
       // The starts were compared by a refinement from one start each; the kept fit's points are
       // refined again from the search's own, now from several starts.
       fit.points = fitter.project(fit.state);
-      refineFit(model_->refiner, lastImage_, fit, RefinerStarts{settings_.refinerStarts});
+      refineFit(model_->refiner, lastImage_, fit, RefinerStarts{settings_.refineRuns - 1});
     }
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {

@@ -58,8 +58,8 @@ struct ImageFitSettings {
   double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
   // Fits the check is unsure of searched again, wider (TrackerSettings::widerSearchBelow).
   double widerSearchBelow = TrackerSettings{}.widerSearchBelow;
-  // The kept fit's points refined from more starts, averaged (TrackerSettings::refinerStarts).
-  int refinerStarts = TrackerSettings{}.refinerStarts;
+  // Runs of the refiner averaged for the kept fit (TrackerSettings::refineRuns).
+  int refineRuns = TrackerSettings{}.refineRuns;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,

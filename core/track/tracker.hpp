@@ -55,9 +55,10 @@ struct TrackerSettings {
   // or 1 / 1.3, the mean error went from 0.069 to 0.054 at 0.97 (0.059 at 0.9); from the
   // detector's own starts, 0.0458 to 0.0456 (docs/real-faces.md). 0 = never.
   double widerSearchBelow = 0.97;
-  // `clm3d fit`: the kept fit's points are refined from this many more starts around them, and
-  // the runs averaged (RefinerStarts; about 1 ms each). The tracker refines from one start.
-  int refinerStarts = 8;
+  // `clm3d fit`: the kept fit's points are refined this many times, from themselves and from
+  // copies moved around them, and the runs averaged (RefinerStarts; about 1 ms a run). The
+  // tracker refines once.
+  int refineRuns = 9;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
   // a probability that the points are right. The tracker uses the one matching its optimiser.

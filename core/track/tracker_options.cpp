@@ -134,11 +134,11 @@ std::vector<TrackerOption> buildOptions() {
                          "searched again from copies of it moved 0.15 eye distances and scaled by "
                          "0.8 and 1.25, the more confident fit kept (0 = never)",
                          [](S& s) -> double& { return s.widerSearchBelow; }));
-  options.push_back(integer("refiner-starts", "Refiner starts", "Search", search, 0, 32,
-                            "clm3d fit: the fit's points are also refined from this many copies "
-                            "of them moved 0.04 eye distances around, and the refined points "
-                            "averaged (0 = from the fit's points alone)",
-                            [](S& s) -> int& { return s.refinerStarts; }));
+  options.push_back(integer("refine-runs", "Refiner runs averaged", "Search", search, 1, 33,
+                            "clm3d fit: runs of the point refiner averaged, from the fit's points "
+                            "and from copies of them moved 0.04 eye distances around (1 = from "
+                            "the fit's points alone)",
+                            [](S& s) -> int& { return s.refineRuns; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));

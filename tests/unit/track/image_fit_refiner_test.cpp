@@ -78,7 +78,7 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
       refining.fitFile(dir / "face.png", dir / "face.pts", dir / "out.pts");
   ASSERT_EQ(refined.status, ImageFitStatus::Ok) << refined.message;
   // The search's points refined from the default 8 more starts, averaged.
-  const RefinerStarts starts{ImageFitSettings{}.refinerStarts};
+  const RefinerStarts starts{ImageFitSettings{}.refineRuns - 1};
   ASSERT_EQ(starts.extra, 8);
   const Eigen::Matrix2Xd expected =
       refineAndCheck(model.refiner, scene.image, searched.fit->points, false, starts).points;
@@ -88,7 +88,7 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   EXPECT_NEAR(written.point(12).x(), expected(0, 12), 1e-3);
   // From the search's points alone.
   ImageFitSettings oneStart;
-  oneStart.refinerStarts = 0;
+  oneStart.refineRuns = 1;
   const ImageFitOutcome single =
       ImageFitter(model, oneStart).fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(single.status, ImageFitStatus::Ok) << single.message;
@@ -141,7 +141,7 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
   EXPECT_NEAR(right.fit->confidence,
               refineAndCheck(model.refiner, scene.image, searched.fit->points, true,
-                             RefinerStarts{ImageFitSettings{}.refinerStarts})
+                             RefinerStarts{ImageFitSettings{}.refineRuns - 1})
                   .rightProbability,
               1e-9);
   // Points moved by most of an eye distance stay wrong after refining, and the check says so.
