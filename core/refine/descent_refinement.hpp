@@ -49,9 +49,9 @@ struct RefinedPoints {
 // directions (the first to the right, turning from x towards y) and scaled about the points'
 // centroid by 1 + spread (even copies) or 1 - spread (odd ones); the refined points are the mean
 // of all the runs. The linear stages' errors from nearby starts partly cancel: on 100 LFPW
-// training photos held out of the model, 8 extra starts took the mean error from 0.0458 to 0.0452
-// from the detector and from 0.0455 to 0.0452 from the truth's 5 points (docs/real-faces.md), for
-// about 1 ms per start. extra 0 = the start alone.
+// training photos held out of the model, refining every search's fit from 8 extra starts took the
+// mean error from 0.0458 to 0.0452 from the detector and from 0.0455 to 0.0452 from the truth's 5
+// points (docs/fitting.md), for about 1 ms per start. extra 0 = the start alone.
 struct RefinerStarts {
   int extra = 0;
   double spread = 0.04;
