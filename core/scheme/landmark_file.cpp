@@ -11,16 +11,11 @@
 #include "core/scheme/pts_format.hpp"
 
 namespace clm3d {
-namespace {
-
-// The built-in scheme with this many points, if any.
-const Scheme* builtInOfSize(int count) {
+const Scheme* builtInSchemeOfSize(int count) {
   if (count == Scheme::thesis25().size()) return &Scheme::thesis25();
   if (count == Scheme::ibug68().size()) return &Scheme::ibug68();
   return nullptr;
 }
-
-}  // namespace
 
 LandmarkFormat landmarkFormatOf(const std::filesystem::path& path) {
   auto extension = path.extension().string();
@@ -44,7 +39,8 @@ LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expec
       break;
     case LandmarkFormat::Ljson: {
       const auto file = parseLjson(text, source);
-      const Scheme* scheme = expected != nullptr ? expected : builtInOfSize(file.points.size());
+      const Scheme* scheme =
+          expected != nullptr ? expected : builtInSchemeOfSize(file.points.size());
       points = scheme != nullptr ? applyLjsonLayout(file, *scheme) : file.points;
       // A 68-point layout (landmarker.io) read for thesis25 must be put in iBUG order first.
       if (expected != nullptr && expected->size() != file.points.size() &&

@@ -14,6 +14,10 @@ namespace clm3d {
 
 enum class LandmarkFormat { Pts, Ljson, Csv };
 
+// The built-in scheme (thesis25, ibug68) with this many points, or nullptr: how a file or table
+// without a scheme's name is given one.
+const Scheme* builtInSchemeOfSize(int count);
+
 // By extension (case-insensitive); throws InputError naming the file for any other extension.
 LandmarkFormat landmarkFormatOf(const std::filesystem::path& path);
 

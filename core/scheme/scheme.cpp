@@ -258,6 +258,30 @@ Scheme Scheme::fromJson(std::string_view text, const std::string& sourceName) {
       scheme.ljsonLayouts_.push_back(std::move(layout));
     }
   }
+  if (const Json* it = top.find("skeleton")) {
+    const auto& lines = reader.array(*it, "skeleton");
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const std::string path = "skeleton[" + std::to_string(l) + "]";
+      if (!lines[l].is_array() || lines[l].size() != 2) {
+        reader.fail(path, "must be a pair [from, to] of landmark ids");
+      }
+      const int a = reader.landmark(lines[l][0], path + "[0]", indexById, count);
+      const int b = reader.landmark(lines[l][1], path + "[1]", indexById, count);
+      if (a == b) reader.fail(path, "joins landmark \"" + scheme.ids_[a] + "\" to itself");
+      for (const auto& [p, q] : scheme.skeleton_) {
+        if ((p == a && q == b) || (p == b && q == a)) {
+          reader.fail(path, "repeats the line " + scheme.ids_[a] + "-" + scheme.ids_[b]);
+        }
+      }
+      scheme.skeleton_.emplace_back(a, b);
+    }
+  } else {
+    for (const auto& region : scheme.regions_) {
+      for (std::size_t m = 1; m < region.indices.size(); ++m) {
+        scheme.skeleton_.emplace_back(region.indices[m - 1], region.indices[m]);
+      }
+    }
+  }
   top.rejectUnknown();
   return scheme;
 }

@@ -69,6 +69,10 @@ class Scheme {
   // The two landmarks whose distance normalises errors (thesis: the eye centres, 8 and 11).
   std::pair<int, int> normalisationPair() const { return normalisation_; }
   const std::vector<LjsonLayout>& ljsonLayouts() const { return ljsonLayouts_; }
+  // The lines that draw the set as a figure (0-based index pairs, each pair once), e.g. the
+  // skeleton of COCO keypoints: the scheme's "skeleton", else each region's landmarks joined in
+  // the order the region lists them.
+  const std::vector<std::pair<int, int>>& skeleton() const { return skeleton_; }
 
  private:
   void checkIndex(int i) const;
@@ -82,6 +86,7 @@ class Scheme {
   std::vector<int> regionOf_;
   std::pair<int, int> normalisation_{0, 0};
   std::vector<LjsonLayout> ljsonLayouts_;
+  std::vector<std::pair<int, int>> skeleton_;
 };
 
 }  // namespace clm3d
