@@ -63,6 +63,8 @@ struct SynthArgs {
   fs::path photo;
   int frames = PhotoSequenceSettings{}.frames;
   std::uint64_t seed = PhotoSequenceSettings{}.seed;
+  double photoRoll = PhotoSequenceSettings{}.rotationDeg;
+  std::string photoZoom = "0.85:1.15";  // PhotoSequenceSettings' 1 +- 0.15
   const CLI::Option* sizeOption = nullptr;
 };
 
@@ -241,6 +243,14 @@ void runPhotoSynth(const SynthArgs& args) {
   settings.frames = args.frames;
   settings.seed = args.seed;
   settings.fps = args.fps;
+  settings.rotationDeg = args.photoRoll;
+  const auto zoom = parseRange(args.photoZoom);
+  if (!zoom || !(zoom->first > 0.0) || zoom->second < zoom->first) {
+    throw CLI::ValidationError("--photo-zoom",
+                               "expected SMALLEST:LARGEST relative sizes, e.g. 0.6:1.6");
+  }
+  settings.scaleCentre = 0.5 * (zoom->first + zoom->second);
+  settings.scaleRange = 0.5 * (zoom->second - zoom->first);
   if (args.sizeOption != nullptr && args.sizeOption->count() > 0) {
     const auto size = parseSize(args.size);
     if (!size) throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 640x480");
@@ -367,6 +377,13 @@ void addSynthCommand(CLI::App& root) {
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "With --photo: seed of the random smooth motion")
+      ->capture_default_str();
+  cmd->add_option("--photo-roll", args->photoRoll,
+                  "With --photo: largest in-plane rotation of the face, degrees either way")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  cmd->add_option("--photo-zoom", args->photoZoom,
+                  "With --photo: SMALLEST:LARGEST relative size of the face (e.g. 0.6:1.6)")
       ->capture_default_str();
   cmd->add_option("--up", args->up, "The scan file's up axis")->capture_default_str();
   cmd->add_option("--front", args->front, "The scan file's axis out of the face")

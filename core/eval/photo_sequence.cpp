@@ -73,6 +73,9 @@ void PhotoSequenceSettings::validate() const {
   range(translationShare, 2.0, "translation");
   range(scaleRange, 0.9, "scale range");
   range(rotationDeg, 180.0, "rotation");
+  if (!(scaleCentre - scaleRange >= 0.1 && scaleCentre + scaleRange <= 10.0)) {
+    fail("the relative size must stay within 0.1..10 (scale centre +- scale range)");
+  }
   range(brightnessRange, 0.9, "brightness range");
   range(contrastRange, 0.9, "contrast range");
   if (!(minPeriodFrames >= 2.0 && maxPeriodFrames >= minPeriodFrames)) {
@@ -98,7 +101,7 @@ std::vector<PhotoMotion> photoTrajectory(const PhotoSequenceSettings& settings, 
   for (std::size_t t = 0; t < motion.size(); ++t) {
     motion[t].dx = shift * dx[t];
     motion[t].dy = shift * dy[t];
-    motion[t].scale = 1.0 + settings.scaleRange * scale[t];
+    motion[t].scale = settings.scaleCentre + settings.scaleRange * scale[t];
     motion[t].rotationDeg = settings.rotationDeg * rotation[t];
     motion[t].brightness = 1.0 + settings.brightnessRange * brightness[t];
     motion[t].contrast = 1.0 + settings.contrastRange * contrast[t];
@@ -255,6 +258,7 @@ PhotoSequenceSummary writePhotoSequence(const cv::Mat& photo, const LandmarkSet&
       {"seed", settings.seed},
       {"translation_share_of_face", settings.translationShare},
       {"scale_range", settings.scaleRange},
+      {"scale_centre", settings.scaleCentre},
       {"rotation_degrees", settings.rotationDeg},
       {"brightness_range", settings.brightnessRange},
       {"contrast_range", settings.contrastRange},

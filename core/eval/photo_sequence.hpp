@@ -29,7 +29,8 @@ struct PhotoSequenceSettings {
   double fps = 30.0;
   // Largest excursion of each motion (the trajectory stays within +-these):
   double translationShare = 0.2;  // shift in x and in y, as a share of the face size
-  double scaleRange = 0.15;       // relative size: 1 +- this
+  double scaleRange = 0.15;       // relative size: scaleCentre +- this
+  double scaleCentre = 1.0;       // (a zoom from 0.6 to 1.6 is centre 1.1, range 0.5)
   double rotationDeg = 20.0;      // in-plane rotation about the face centre
   double brightnessRange = 0.2;   // gain of the whole frame: 1 +- this
   double contrastRange = 0.2;     // gain about mid-grey: 1 +- this

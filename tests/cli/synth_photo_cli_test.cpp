@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <string>
 
@@ -144,6 +145,24 @@ TEST(SynthPhotoCli, TheSameSeedGivesTheSameSequenceAnotherSeedAnother) {
     EXPECT_EQ(fa.size(), cv::Size(200, 160));
     EXPECT_EQ(cv::norm(fa, fb, cv::NORM_INF), 0.0) << "frame " << k;
   }
+}
+
+// --photo-roll and --photo-zoom set the motion's ranges (recorded in sequence.json); a zoom that
+// is not SMALLEST:LARGEST is refused as bad usage.
+TEST(SynthPhotoCli, RollAndZoomRangesAreTheOnesGiven) {
+  const PhotoFiles& f = photoFiles();
+  const fs::path out = f.dir / "roll-zoom";
+  const std::string base = "synth --photo " + f.photo.string() + " --landmarks " +
+                           f.points.string() + " --frames 4 --size 200x160 ";
+  const auto result = runClm3d(base + "--photo-roll 45 --photo-zoom 0.6:1.6 --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const auto json = nlohmann::json::parse(test::readFile(out / "sequence.json"));
+  EXPECT_DOUBLE_EQ(json["motion"]["rotation_degrees"].get<double>(), 45.0);
+  EXPECT_NEAR(json["motion"]["scale_centre"].get<double>(), 1.1, 1e-12);
+  EXPECT_NEAR(json["motion"]["scale_range"].get<double>(), 0.5, 1e-12);
+  const auto bad = runClm3d(base + "--photo-zoom 1.6:0.6 --out " + (f.dir / "bad").string());
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_TRUE(test::contains(bad.output, "--photo-zoom")) << bad.output;
 }
 
 TEST(SynthPhotoCli, A68PointFileKeepsThePointsWithAFixedCounterpart) {

@@ -47,6 +47,33 @@ TEST(PhotoTrajectory, SmoothWithinRangesAndRepeatableBySeed) {
   EXPECT_NE(photoTrajectory(settings, 100.0)[0].dx, motion[0].dx);
 }
 
+// A zoom from 0.6 to 1.6 (centre 1.1, range 0.5) and a roll to 45 degrees: the trajectory stays
+// in those ranges and uses most of them; a range that would shrink the face to nothing is refused.
+TEST(PhotoTrajectory, ZoomAboutItsCentreAndRollWithinTheirRanges) {
+  PhotoSequenceSettings settings;
+  settings.frames = 600;
+  settings.seed = 3;
+  settings.scaleCentre = 1.1;
+  settings.scaleRange = 0.5;
+  settings.rotationDeg = 45.0;
+  const auto motion = photoTrajectory(settings, 100.0);
+  double smallest = 10.0;
+  double largest = 0.0;
+  double roll = 0.0;
+  for (const PhotoMotion& m : motion) {
+    smallest = std::min(smallest, m.scale);
+    largest = std::max(largest, m.scale);
+    roll = std::max(roll, std::abs(m.rotationDeg));
+  }
+  EXPECT_GE(smallest, 0.6 - 1e-9);
+  EXPECT_LE(largest, 1.6 + 1e-9);
+  EXPECT_LT(smallest, 0.85);  // beyond the default range's 0.85..1.15 on both sides
+  EXPECT_GT(largest, 1.35);
+  EXPECT_GT(roll, 30.0);
+  settings.scaleCentre = 0.5;
+  EXPECT_THROW(settings.validate(), InputError);
+}
+
 TEST(PhotoTransform, RestIsIdentityAndRotationTurnsAboutTheFaceCentre) {
   const Eigen::Vector2d centre(60.0, 40.0);
   const cv::Matx23d rest = photoTransform({}, centre, cv::Size(121, 81), cv::Size(120, 80));
