@@ -60,13 +60,14 @@ double meanFocal(const Camera& camera) {
 // for the 3D model, the depth as an extra unknown u = log(-Tz).
 class PointsProblem {
  public:
+  // depthUnknown: the 3D model's depth is estimated too (else it stays where setDepth put it).
   PointsProblem(const ShapeModel& shape, const Camera& camera, const std::vector<int>& landmarks,
-                const Eigen::Matrix2Xd& target, double sigma)
+                const Eigen::Matrix2Xd& target, double sigma, bool depthUnknown = true)
       : shape_(shape),
         projector_(shape, camera),
         target_(target),
         sigma2_(sigma * sigma),
-        withDepth_(!projector_.planar()),
+        withDepth_(depthUnknown && !projector_.planar()),
         params_(projector_.paramCount()),
         unknowns_(params_ + (withDepth_ ? 1 : 0)),
         points_(2, static_cast<Eigen::Index>(landmarks.size())),
@@ -268,10 +269,13 @@ FitState stateFromBox(const ClmModel& model, const Camera& camera, const FaceBox
   return state;
 }
 
-FitState stateFromPoints(const ClmModel& model, const Camera& camera,
-                         const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
-                         const PointsFitSettings& settings) {
-  const ShapeModel& shape = model.shape;
+namespace {
+
+// The landmarks `present` marks (all when empty), checked: finite, at least 4, not all in one
+// place. Their points and mean-shape positions go to target and mean.
+std::vector<int> pointsToFit(const ShapeModel& shape, const Eigen::Matrix2Xd& points,
+                             const std::vector<bool>& present, const PointsFitSettings& settings,
+                             Eigen::Matrix2Xd& target, Eigen::Matrix3Xd& mean) {
   const int n = shape.pointCount();
   if (points.cols() != n) {
     throw InputError("initial points: " + std::to_string(points.cols()) +
@@ -298,8 +302,8 @@ FitState stateFromPoints(const ClmModel& model, const Camera& camera,
                      " points present, at least 4 are needed to place the model");
   }
   const int m = static_cast<int>(used.size());
-  Eigen::Matrix2Xd target(2, m);
-  Eigen::Matrix3Xd mean(3, m);
+  target.resize(2, m);
+  mean.resize(3, m);
   for (int j = 0; j < m; ++j) {
     target.col(j) = points.col(used[static_cast<std::size_t>(j)]);
     mean.col(j) = shape.meanShape.col(used[static_cast<std::size_t>(j)]);
@@ -308,6 +312,20 @@ FitState stateFromPoints(const ClmModel& model, const Camera& camera,
   if (!(spread.norm() > 1e-6)) {
     throw InputError("initial points: the present points all coincide");
   }
+
+  return used;
+}
+
+}  // namespace
+
+FitState stateFromPoints(const ClmModel& model, const Camera& camera,
+                         const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
+                         const PointsFitSettings& settings) {
+  const ShapeModel& shape = model.shape;
+  Eigen::Matrix2Xd target;
+  Eigen::Matrix3Xd mean;
+  const std::vector<int> used = pointsToFit(shape, points, present, settings, target, mean);
+  const int m = static_cast<int>(used.size());
 
   PointsProblem problem(shape, camera, used, target, settings.pointSigmaPixels);
   const bool planar = problem.projector().planar();
@@ -354,6 +372,22 @@ FitState stateFromPoints(const ClmModel& model, const Camera& camera,
     state.pose.translation.z() = problem.projector().depth();
   }
   fromParams(best.head(problem.params()), state);
+  return state;
+}
+
+FitState stateNearPoints(const ClmModel& model, const Camera& camera,
+                         const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
+                         const FitState& start, const PointsFitSettings& settings) {
+  checkShapeSize(model, start);
+  Eigen::Matrix2Xd target;
+  Eigen::Matrix3Xd mean;
+  const std::vector<int> used = pointsToFit(model.shape, points, present, settings, target, mean);
+  PointsProblem problem(model.shape, camera, used, target, settings.pointSigmaPixels, false);
+  problem.projector().setDepth(start.pose.translation.z());
+  Eigen::VectorXd x = toParams(start);
+  problem.minimise(x, settings.maxIterations);
+  FitState state = start;
+  fromParams(x, state);
   return state;
 }
 

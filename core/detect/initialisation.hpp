@@ -65,6 +65,15 @@ FitState stateFromPoints(const ClmModel& model, const Camera& camera,
                          const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
                          const PointsFitSettings& settings = {});
 
+// The same from `start` alone (no other starting yaws), keeping its depth Tz as a search does:
+// the state nearest a known one that reproduces `points`. The tracker carries a frame's checked,
+// refined points on to the next frame this way, so the 3D state it starts from agrees with the
+// points it output. Throws InputError as stateFromPoints does, and for a start whose shape has the
+// wrong size.
+FitState stateNearPoints(const ClmModel& model, const Camera& camera,
+                         const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
+                         const FitState& start, const PointsFitSettings& settings = {});
+
 // Every landmark of `state` projected to input pixels (2 x the scheme's landmark count).
 Eigen::Matrix2Xd projectState(const ClmModel& model, const Camera& camera, const FitState& state);
 

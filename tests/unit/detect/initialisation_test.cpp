@@ -114,6 +114,29 @@ TEST_P(StateFromPointsYaw, NoisyPointsGiveANearbyState) {
   EXPECT_NEAR(degrees(found.pose.yaw), GetParam(), 6.0);
 }
 
+// From a start 12 degrees of yaw, 10 of roll and 15 pixels away, with its shape at the mean,
+// stateNearPoints reaches the state whose projection the points are, keeping the start's depth.
+TEST_P(StateFromPointsYaw, NearAStartRecoversTheProjectionAndKeepsTheDepth) {
+  const ClmModel& model = test::fitTestModel();
+  const Camera camera = testCamera();
+  const FitState truth = knownState(model, 4.0, GetParam(), -6.0);
+  const Eigen::Matrix2Xd points = projectState(model, camera, truth);
+  FitState start = truth;
+  start.pose.yaw += radians(12.0);
+  start.pose.roll += radians(10.0);
+  start.pose.translation.x() += 15.0 * -truth.pose.translation.z() / camera.focalX();
+  start.shape.setZero();
+
+  const FitState found = stateNearPoints(model, camera, points, {}, start);
+  EXPECT_EQ(found.pose.translation.z(), start.pose.translation.z());
+  EXPECT_LT(maxError(projectState(model, camera, found), points), 0.05);
+  EXPECT_NEAR(degrees(found.pose.yaw), GetParam(), 0.5);
+  EXPECT_NEAR(degrees(found.pose.roll), -6.0, 0.5);
+  // Without the points it would stay where it started: the start is off by pixels, not hundredths.
+  EXPECT_GT(maxError(projectState(model, camera, start), points), 5.0);
+  EXPECT_THROW(stateNearPoints(model, camera, points, {}, FitState{}), InputError);
+}
+
 INSTANTIATE_TEST_SUITE_P(Yaws, StateFromPointsYaw, ::testing::Values(-40.0, 0.0, 40.0));
 
 TEST(StateFromPoints, PlanarModelRecoversItsOwnProjection) {
