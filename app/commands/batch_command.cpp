@@ -95,11 +95,8 @@ void reportCounts(int items, int ok, int rejected, int noFace, int errors,
   }
 }
 
-// Images are fitted with the search part of the tracker options, videos tracked with all of them.
 BatchSettings makeSettings(const BatchArgs& args) {
-  BatchSettings settings;
-  settings.track = args.fit.tracker;
-  settings.image = imageFitSettings(args.fit.tracker, args.fit.fovDeg);
+  BatchSettings settings = batchSettings(args.fit.tracker, args.fit.fovDeg);
   settings.image.keepRejected = args.keepRejected;
   return settings;
 }
@@ -243,10 +240,9 @@ void addBatchCommand(CLI::App& root) {
                       "(repeat for more)");
   command->add_flag("--no-wait", args->noWait,
                     "with --slurm: submit and return; merge later with `clm3d batch merge`");
-  // Every option of `clm3d track` (core/track/tracker_options): the search ones apply to images
-  // too; recorded in OUT/options.txt, and a rerun with others is refused.
-  addTrackerOptions(*command, args->fit.tracker, OptionScope::Track);
-  addFitOptions(*command, args->fit);
+  // The options of `clm3d fit` and of `clm3d track` (core/track/tracker_options): images are
+  // fitted, videos tracked; recorded in OUT/options.txt, and a rerun with others is refused.
+  addFitOptions(*command, args->fit, OptionCommand::Batch);
 
   auto mergeDir = std::make_shared<fs::path>();
   CLI::App* merge = command->add_subcommand(

@@ -167,7 +167,7 @@ void addFitCommand(CLI::App& root) {
                    "image from --seed (failure-detection experiments: wrong fits on purpose)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 5.0));
-  addFitOptions(*command, args->fit);
+  addFitOptions(*command, args->fit, OptionCommand::Fit);
   command->callback([args] { runFit(*args); });
 }
 

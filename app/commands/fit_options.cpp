@@ -7,14 +7,8 @@
 
 namespace clm3d::cli {
 
-void addTrackerOptions(CLI::App& command, TrackerSettings& settings, OptionScope scope) {
-  for (const TrackerOption& option : trackerOptions()) {
-    if (option.scope == scope) addTableOption(command, option, settings);
-  }
-}
-
-void addFitOptions(CLI::App& command, FitOptions& options) {
-  addTrackerOptions(command, options.tracker, OptionScope::Search);
+void addFitOptions(CLI::App& command, FitOptions& options, OptionCommand which) {
+  addTableOptions(command, trackerOptions(), which, options.tracker);
   command.add_option("--fov", options.fovDeg, "vertical field of view of the camera, degrees")
       ->capture_default_str()
       ->check(CLI::Range(5.0, 150.0));

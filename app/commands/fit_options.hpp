@@ -1,6 +1,7 @@
-// The search and tracker options of `clm3d fit` and `clm3d track`, built from core's one
-// description of them (core/track/tracker_options.hpp: name, kind, range, default, help), so both
-// commands and the studio's Track page spell, limit and explain them the same way.
+// The search and tracker options of `clm3d fit`, `clm3d track` and `clm3d batch`, built from
+// core's one description of them (core/track/tracker_options.hpp: name, kind, range, default,
+// help, the commands that take it), so the commands and the studio's Track page spell, limit and
+// explain them the same way and each command takes only the options its code reads.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,8 +17,7 @@
 namespace clm3d::cli {
 
 struct FitOptions {
-  // Filled by the table's options: the Search ones (addFitOptions), and for `clm3d track` the
-  // Track ones too (addTrackerOptions).
+  // Filled by the table's options that the command takes (addFitOptions).
   TrackerSettings tracker;
   double fovDeg = kDefaultVerticalFovDeg;
 
@@ -26,11 +26,9 @@ struct FitOptions {
   std::uint64_t seed() const { return tracker.fit.optimiserSettings.seed; }
 };
 
-// The table's Search options and --fov. `options` must outlive the command's parsing.
-void addFitOptions(CLI::App& command, FitOptions& options);
-// The table's options of `scope` (e.g. Track for `clm3d track`), writing into `settings`, which
-// must outlive the command's parsing.
-void addTrackerOptions(CLI::App& command, TrackerSettings& settings, OptionScope scope);
+// The tracker table's options that `which` takes (Fit, Track or Batch: TrackerOption::commands)
+// and --fov. `options` must outlive the command's parsing.
+void addFitOptions(CLI::App& command, FitOptions& options, OptionCommand which);
 
 // The start state of `--init FILE`: the model fitted to the file's points (.pts, .ljson, .csv;
 // 68-point files converted). Problems are InputErrors that name the file.

@@ -1,13 +1,15 @@
 // Command-line options built from an option table (core/common/option_table.hpp): --NAME with the
 // table's help, its default shown in --help and its range checked by CLI11 (bad usage, exit 2),
-// the value parsed by the option's own setter (InputError, exit 1). `clm3d fit` / `clm3d track`
-// (core/track/tracker_options) and `clm3d train` (core/train/train_options) use it, so every
-// table-driven option is spelt, limited and explained the same way.
+// the value parsed by the option's own setter (InputError, exit 1). `clm3d fit`, `clm3d track`,
+// `clm3d batch` (core/track/tracker_options) and `clm3d train` (core/train/train_options) use it,
+// each taking the options scoped to it, so every table-driven option is spelt, limited and
+// explained the same way and a command refuses an option its code would not read.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/common/option_table.hpp"
 
@@ -24,6 +26,13 @@ template <typename OptionT, typename Settings>
 void addTableOption(CLI::App& command, const OptionT& option, Settings& settings) {
   addSpecOption(command, option, option.defaultText(),
                 [&settings, &option](const std::string& text) { option.set(settings, text); });
+}
+
+// Adds the options of `table` that `which` takes (OptionSpec::commands), in the table's order.
+template <typename OptionT, typename Settings>
+void addTableOptions(CLI::App& command, const std::vector<OptionT>& table, OptionCommand which,
+                     Settings& settings) {
+  for (const OptionT* option : optionsFor(table, which)) addTableOption(command, *option, settings);
 }
 
 }  // namespace clm3d::cli

@@ -122,8 +122,7 @@ void addTrackCommand(CLI::App& root) {
                       "also write the video with the landmarks and patches drawn (.mp4, .avi)");
   command->add_option("--init", args->init, "start the first frame from these points");
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
-  addTrackerOptions(*command, args->fit.tracker, OptionScope::Track);
-  addFitOptions(*command, args->fit);
+  addFitOptions(*command, args->fit, OptionCommand::Track);
   command->callback([args] { runTrack(*args); });
 }
 

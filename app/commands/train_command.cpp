@@ -113,7 +113,7 @@ void addTrainCommand(CLI::App& root) {
   command->add_option("--report", args->report, "Folder for the report pictures");
   // Every training setting, from the one table the studio's form and TrainSettings::validate
   // use too (names, help, defaults, ranges).
-  for (const TrainOption& option : trainOptions()) addTableOption(*command, option, args->settings);
+  addTableOptions(*command, trainOptions(), OptionCommand::Train, args->settings);
   command->callback([args] { runTrain(*args); });
 }
 

@@ -39,6 +39,29 @@ T parseNumber(const OptionSpec& option, std::string_view text, const char* what)
 
 }  // namespace
 
+const char* optionCommandName(OptionCommand command) {
+  switch (command) {
+    case OptionCommand::Fit:
+      return "fit";
+    case OptionCommand::Track:
+      return "track";
+    case OptionCommand::Batch:
+      return "batch";
+    case OptionCommand::Train:
+      return "train";
+  }
+  return "?";
+}
+
+std::string optionCommandsText(OptionCommands commands) {
+  std::string text;
+  for (const OptionCommand command : kOptionCommands) {
+    if (commands.has(command))
+      text += (text.empty() ? "" : ", ") + std::string(optionCommandName(command));
+  }
+  return text;
+}
+
 std::string optionRealText(double value) {
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);

@@ -22,6 +22,36 @@ namespace clm3d {
 // RealList: numbers separated by commas, each within the range (e.g. view angles).
 enum class OptionKind { Integer, Real, Flag, Choice, RealList };
 
+// The commands an option applies to; the studio's forms are named after them (the Track page's
+// settings form shows the Track options, the Train page's the Train ones). `clm3d batch` fits
+// images and tracks videos, so it takes the options of both.
+enum class OptionCommand : unsigned { Fit = 1u, Track = 2u, Batch = 4u, Train = 8u };
+
+struct OptionCommands {
+  unsigned bits = 0;
+
+  constexpr bool has(OptionCommand command) const {
+    return (bits & static_cast<unsigned>(command)) != 0;
+  }
+  friend constexpr OptionCommands operator|(OptionCommands a, OptionCommand b) {
+    return {a.bits | static_cast<unsigned>(b)};
+  }
+};
+constexpr OptionCommands operator|(OptionCommand a, OptionCommand b) {
+  return OptionCommands{static_cast<unsigned>(a)} | b;
+}
+constexpr OptionCommands only(OptionCommand command) {
+  return {static_cast<unsigned>(command)};
+}
+
+// Every command, in the order help and tests list them.
+inline constexpr OptionCommand kOptionCommands[] = {OptionCommand::Fit, OptionCommand::Track,
+                                                    OptionCommand::Batch, OptionCommand::Train};
+// "fit", "track", "batch", "train".
+const char* optionCommandName(OptionCommand command);
+// "fit, track, batch": the commands of `commands`, in kOptionCommands' order.
+std::string optionCommandsText(OptionCommands commands);
+
 // What an option says about itself, whatever settings it belongs to.
 struct OptionSpec {
   std::string name;   // as on the command line without "--", e.g. "patch-size"
@@ -33,6 +63,8 @@ struct OptionSpec {
   double maximum = 0.0;
   int decimals = 2;                  // Real: digits the studio shows
   std::vector<std::string> choices;  // Choice: the valid values
+  // The commands (and studio forms) the option applies to; the others do not accept it.
+  OptionCommands commands{};
 };
 
 // The shortest text that reads back to the same double.
@@ -135,6 +167,16 @@ const OptionT* findOption(const std::vector<OptionT>& table, std::string_view na
     if (option.name == name) return &option;
   }
   return nullptr;
+}
+
+// The options of `table` that `command` takes, in the table's order.
+template <typename OptionT>
+std::vector<const OptionT*> optionsFor(const std::vector<OptionT>& table, OptionCommand command) {
+  std::vector<const OptionT*> options;
+  for (const OptionT& option : table) {
+    if (option.commands.has(command)) options.push_back(&option);
+  }
+  return options;
 }
 
 // The options whose value differs from the default, name -> text.

@@ -25,6 +25,8 @@ struct StartSearchSettings {
   // Each shifted start is also searched at these relative sizes (1 = as placed), e.g. {0.9, 1.1}.
   // Empty: the placed size only.
   std::vector<double> sizes;
+
+  bool operator==(const StartSearchSettings&) const = default;
 };
 
 // `start` moved in the image plane by shareOfEyes (x right, y down) times its projected

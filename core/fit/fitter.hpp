@@ -34,6 +34,8 @@ struct FitSettings {
   double viewHysteresisDeg = 5.0;
 
   void validate(const ClmModel& model) const;  // InputError naming the bad setting
+
+  bool operator==(const FitSettings&) const = default;
 };
 
 struct FitResult {

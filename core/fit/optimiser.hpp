@@ -29,6 +29,8 @@ struct OptimiserSettings {
   int rlmsRadius = 4;
   double rlmsSigma = 1.5;
   double rlmsRegularisation = 1.0;
+
+  bool operator==(const OptimiserSettings&) const = default;
 };
 
 class Optimiser {

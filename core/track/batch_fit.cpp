@@ -66,7 +66,9 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.tiltSteps = tracker.tiltSteps;
   settings.tiltStepDeg = tracker.tiltStepDeg;
   settings.widerSearchBelow = tracker.widerSearchBelow;
+  settings.widerSearch = tracker.widerSearch;
   settings.refineRuns = tracker.refineRuns;
+  settings.refineSpread = tracker.refineSpread;
   return settings;
 }
 
@@ -174,6 +176,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       search.tiltSteps = checked ? settings_.tiltSteps : 0;
       search.tiltStepDeg = settings_.tiltStepDeg;
       search.widerBelow = checked ? settings_.widerSearchBelow : 0.0;
+      search.wider = settings_.widerSearch;
       std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
                                                          faces, search, &turnedMilliseconds);
       outcome.detectMilliseconds += turnedMilliseconds;
@@ -192,7 +195,8 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       // The starts were compared by a refinement from one start each; the kept fit's points are
       // refined again from the search's own, now from several starts.
       fit.points = fitter.project(fit.state);
-      refineFit(model_->refiner, lastImage_, fit, RefinerStarts{settings_.refineRuns - 1});
+      refineFit(model_->refiner, lastImage_, fit,
+                RefinerStarts{settings_.refineRuns - 1, settings_.refineSpread});
     }
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {

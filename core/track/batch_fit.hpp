@@ -58,8 +58,13 @@ struct ImageFitSettings {
   double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
   // Fits the check is unsure of searched again, wider (TrackerSettings::widerSearchBelow).
   double widerSearchBelow = TrackerSettings{}.widerSearchBelow;
-  // Runs of the refiner averaged for the kept fit (TrackerSettings::refineRuns).
+  StartSearchSettings widerSearch = TrackerSettings{}.widerSearch;
+  // Runs of the refiner averaged for the kept fit, and their spread (TrackerSettings::refineRuns,
+  // refineSpread).
   int refineRuns = TrackerSettings{}.refineRuns;
+  double refineSpread = TrackerSettings{}.refineSpread;
+
+  bool operator==(const ImageFitSettings&) const = default;
 };
 
 // The settings of a still image's fit from the tracker's search options (the search, detector,

@@ -46,7 +46,13 @@ struct BatchJob {
 struct BatchSettings {
   ImageFitSettings image;
   TrackerSettings track;
+
+  bool operator==(const BatchSettings&) const = default;
 };
+
+// Images fitted with the photo fit's part of the tracker options (imageFitSettings), videos
+// tracked with the tracker's: what `clm3d batch` runs with.
+BatchSettings batchSettings(const TrackerSettings& tracker, double verticalFovDeg);
 
 // The options a batch's outputs depend on, name -> value as given on the command line: the
 // tracker options (core/track/tracker_options) of settings.track that differ from their defaults
@@ -64,7 +70,8 @@ void checkBatchOptions(const std::filesystem::path& outDir,
 
 // One row of the summary: the item as given, its status (ok, no-face for an image without a face,
 // error), frames searched (1 for an image), failed frames (an image without a face, a video's
-// frames the tracker judged failed), seconds spent and the error message.
+// frames the tracker judged failed), seconds spent and the error message (for a video tracked
+// with frames it declares but could not decode, status ok: unreadableFramesWarning's).
 struct BatchRow {
   std::string item;
   ImageFitStatus status = ImageFitStatus::Error;

@@ -21,6 +21,8 @@ struct SmoothingSettings {
   double beta = 1.0;
   // Cutoff of the speed estimate itself, Hz.
   double derivativeCutoffHz = 1.0;
+
+  bool operator==(const SmoothingSettings&) const = default;
 };
 
 // Throws InputError naming the setting when a cutoff is not positive or beta is negative.

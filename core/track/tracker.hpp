@@ -16,6 +16,7 @@
 #include "core/detect/face_detector.hpp"
 #include "core/detect/start_search.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/refine/descent_refinement.hpp"
 #include "core/track/track_smoother.hpp"
 #include "core/track/track_table.hpp"
 
@@ -47,18 +48,21 @@ struct TrackerSettings {
   // tilted with them, until a fit passes (FaceDetector::detectTurned). The detectors find faces
   // within about 15 degrees of upright. 0 = off.
   int tiltSteps = 2;
-  double tiltStepDeg = 15.0;
+  double tiltStepDeg = FaceSearch{}.tiltStepDeg;
   // Unsure fits (`clm3d fit`): when the kept fit's check probability is below this, it is searched
-  // again from copies of it moved 0.15 eye distances and scaled by 0.8 and 1.25, and the more
+  // again from the grid of widerSearch around it (moved and rescaled copies of it), and the more
   // confident fit kept (FaceSearch::widerBelow): a face the detector boxed too small or too large.
   // On 100 LFPW training photos held out of the model, with every detector start rescaled by 1.3
   // or 1 / 1.3, the mean error went from 0.069 to 0.054 at 0.97 (0.059 at 0.9); from the
   // detector's own starts, 0.0458 to 0.0456 (docs/real-faces.md). 0 = never.
   double widerSearchBelow = 0.97;
+  StartSearchSettings widerSearch = FaceSearch{}.wider;
   // `clm3d fit`: the kept fit's points are refined this many times, from themselves and from
   // copies moved around them, and the runs averaged (RefinerStarts; about 1 ms a run). The
   // tracker refines once.
   int refineRuns = 9;
+  // How far those copies are moved, in eye distances (RefinerStarts::spread).
+  double refineSpread = RefinerStarts{}.spread;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
   // a probability that the points are right. The tracker uses the one matching its optimiser.
@@ -111,6 +115,8 @@ struct TrackerSettings {
   // when the check's probability that its refined points are right is below this; the search's
   // confidence thresholds above are then not applied.
   double minCheckProbability = 0.5;
+
+  bool operator==(const TrackerSettings&) const = default;
 };
 
 // Per landmark, whether it is visible from `pose`: whether the model view whose centre is nearest

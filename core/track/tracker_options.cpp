@@ -12,11 +12,12 @@ namespace {
 
 using S = TrackerSettings;
 
-TrackerOption scoped(Option<S> option, OptionScope scope) {
-  return TrackerOption{std::move(option), scope};
+TrackerOption scoped(Option<S> option, OptionCommands commands) {
+  option.commands = commands;
+  return TrackerOption{std::move(option)};
 }
 
-TrackerOption real(std::string name, std::string label, std::string group, OptionScope scope,
+TrackerOption real(std::string name, std::string label, std::string group, OptionCommands commands,
                    double minimum, double maximum, int decimals, std::string help,
                    double& (*field)(S&)) {
   return scoped(realOption<S>({std::move(name),
@@ -29,11 +30,12 @@ TrackerOption real(std::string name, std::string label, std::string group, Optio
                                decimals,
                                {}},
                               field),
-                scope);
+                commands);
 }
 
-TrackerOption integer(std::string name, std::string label, std::string group, OptionScope scope,
-                      int minimum, int maximum, std::string help, int& (*field)(S&)) {
+TrackerOption integer(std::string name, std::string label, std::string group,
+                      OptionCommands commands, int minimum, int maximum, std::string help,
+                      int& (*field)(S&)) {
   return scoped(integerOption<S>({std::move(name),
                                   std::move(label),
                                   std::move(group),
@@ -44,10 +46,10 @@ TrackerOption integer(std::string name, std::string label, std::string group, Op
                                   0,
                                   {}},
                                  field),
-                scope);
+                commands);
 }
 
-TrackerOption flag(std::string name, std::string label, std::string group, OptionScope scope,
+TrackerOption flag(std::string name, std::string label, std::string group, OptionCommands commands,
                    std::string help, bool& (*field)(S&), bool inverted) {
   return scoped(flagOption<S>({std::move(name),
                                std::move(label),
@@ -59,26 +61,31 @@ TrackerOption flag(std::string name, std::string label, std::string group, Optio
                                0,
                                {}},
                               field, inverted),
-                scope);
+                commands);
 }
 
-TrackerOption choice(std::string name, std::string label, std::string group, OptionScope scope,
-                     std::vector<std::string> choices, std::string help,
+TrackerOption choice(std::string name, std::string label, std::string group,
+                     OptionCommands commands, std::vector<std::string> choices, std::string help,
                      std::function<std::string(const S&)> get,
                      std::function<void(S&, const std::string&)> apply) {
   return scoped(
       choiceOption<S>({std::move(name), std::move(label), std::move(group), OptionKind::Choice,
                        std::move(help), 0.0, 0.0, 0, std::move(choices)},
                       std::move(get), std::move(apply)),
-      scope);
+      commands);
 }
 
 std::vector<TrackerOption> buildOptions() {
   std::vector<TrackerOption> options;
-  const OptionScope search = OptionScope::Search;
-  const OptionScope track = OptionScope::Track;
+  using C = OptionCommand;
+  // The search's own options: images (fit, batch) and videos (track, batch) alike.
+  const OptionCommands search = C::Fit | C::Track | C::Batch;
+  // What only a still image's fit does (core/track/batch_fit): the tracker does not read them.
+  const OptionCommands photo = C::Fit | C::Batch;
+  // The tracker's own: failure thresholds, motion, view search, smoothing.
+  const OptionCommands track = C::Track | C::Batch;
 
-  // --- Search (clm3d fit and clm3d track) ---------------------------------------------------
+  // --- Search ---------------------------------------------------------------------------------
   std::string names;
   for (const std::string& name : optimiserNames()) names += (names.empty() ? "" : ", ") + name;
   options.push_back(choice(
@@ -120,25 +127,45 @@ std::vector<TrackerOption> buildOptions() {
                             "confident kept; without a check the best face only); 1 = the best "
                             "face only",
                             [](S& s) -> int& { return s.facesTried; }));
-  options.push_back(integer("tilt-steps", "Tilted-face turns", "Search", search, 0, 6,
-                            "clm3d fit: when no upright face's fit passes the point refiner's "
-                            "check, detect in copies of the image turned by this many steps each "
-                            "way and search their faces tilted (0 = off)",
+  options.push_back(integer("tilt-steps", "Tilted-face turns", "Search", photo, 0, 6,
+                            "when no upright face's fit passes the point refiner's check, detect "
+                            "in copies of the image turned by this many steps each way and search "
+                            "their faces tilted (0 = off)",
                             [](S& s) -> int& { return s.tiltSteps; }));
-  options.push_back(real("tilt-step", "Tilted-face turn step", "Search", search, 5.0, 45.0, 1,
+  options.push_back(real("tilt-step", "Tilted-face turn step", "Search", photo, 5.0, 45.0, 1,
                          "degrees between those turns",
                          [](S& s) -> double& { return s.tiltStepDeg; }));
-  options.push_back(real("wider-search-below", "Wider search below (check)", "Search", search, 0.0,
+  options.push_back(real("wider-search-below", "Wider search below (check)", "Search", photo, 0.0,
                          1.0, 2,
-                         "clm3d fit: a fit whose point check gives a probability below this is "
-                         "searched again from copies of it moved 0.15 eye distances and scaled by "
-                         "0.8 and 1.25, the more confident fit kept (0 = never)",
+                         "a fit whose point check gives a probability below this is searched "
+                         "again from copies of it moved by --wider-shift and scaled by "
+                         "--wider-sizes, the more confident fit kept (0 = never)",
                          [](S& s) -> double& { return s.widerSearchBelow; }));
-  options.push_back(integer("refine-runs", "Refiner runs averaged", "Search", search, 1, 33,
-                            "clm3d fit: runs of the point refiner averaged, from the fit's points "
-                            "and from copies of them moved 0.04 eye distances around (1 = from "
-                            "the fit's points alone)",
+  options.push_back(real("wider-shift", "Wider search spacing", "Search", photo, 0.01, 0.5, 2,
+                         "spacing of the wider search's 3x3 grid of moved copies, in eye "
+                         "distances",
+                         [](S& s) -> double& { return s.widerSearch.shift; }));
+  options.push_back(
+      scoped(realListOption<S>({"wider-sizes",
+                                "Wider search sizes",
+                                "Search",
+                                OptionKind::RealList,
+                                "relative sizes each of those copies is also searched at (1 = as "
+                                "fitted), separated by commas",
+                                0.5,
+                                2.0,
+                                2,
+                                {}},
+                               [](S& s) -> std::vector<double>& { return s.widerSearch.sizes; }),
+             photo));
+  options.push_back(integer("refine-runs", "Refiner runs averaged", "Search", photo, 1, 33,
+                            "runs of the point refiner averaged, from the fit's points and from "
+                            "copies of them moved --refine-spread around (1 = from the fit's "
+                            "points alone)",
                             [](S& s) -> int& { return s.refineRuns; }));
+  options.push_back(real("refine-spread", "Refiner runs' spread", "Search", photo, 0.0, 0.5, 3,
+                         "how far those copies are moved, in eye distances",
+                         [](S& s) -> double& { return s.refineSpread; }));
   options.push_back(real("shape-prior", "Shape prior weight", "Search", search, 0.0, 1e6, 2,
                          "weight of the shape prior in gauss-newton and fastncc (0 = none)",
                          [](S& s) -> double& { return s.fit.optimiserSettings.shapePrior; }));
@@ -169,7 +196,8 @@ std::vector<TrackerOption> buildOptions() {
                            return s.fit.optimiserSettings.rlmsRegularisation;
                          }));
 
-  // --- Failure (clm3d track) ------------------------------------------------------------------
+  // --- Failure (clm3d track; the check's probability: fit too)
+  // ------------------------------------------------------------------
   options.push_back(real("min-confidence", "Lowest confidence (NCC)", "Failure", track, -1.0, 1.0,
                          2,
                          "mean NCC below which a frame counts as failed and the face is "
@@ -180,11 +208,12 @@ std::vector<TrackerOption> buildOptions() {
                          "the same for rlms: the patch experts' mean response (0..1) below which "
                          "a frame counts as failed",
                          [](S& s) -> double& { return s.minExpertConfidence; }));
-  options.push_back(real("min-check-probability", "Lowest check probability", "Failure", track, 0.0,
-                         1.0, 2,
+  options.push_back(real("min-check-probability", "Lowest check probability", "Failure", search,
+                         0.0, 1.0, 2,
                          "models whose point refiner has a check (trained with photos): the "
                          "check's probability that the refined points are right below which a "
-                         "frame counts as failed (the two thresholds above are then not used)",
+                         "frame counts as failed (the two thresholds above are then not used); "
+                         "a photo's fit below it is rejected and the next face searched",
                          [](S& s) -> double& { return s.minCheckProbability; }));
   options.push_back(real("max-shape-rms", "Largest shape RMS", "Failure", track, 0.1, 10.0, 2,
                          "root mean square of the shape parameters in standard deviations beyond "

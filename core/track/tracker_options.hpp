@@ -17,14 +17,11 @@
 
 namespace clm3d {
 
-// Search: the options of the search itself (`clm3d fit` and `clm3d track`); Track: the tracker's
-// own (failure thresholds, motion, view search, smoothing; `clm3d track` only).
-enum class OptionScope { Search, Track };
-
-// An option of the table (core/common/option_table.hpp) and the commands it belongs to.
-struct TrackerOption : Option<TrackerSettings> {
-  OptionScope scope = OptionScope::Search;
-};
+// An option of the table (core/common/option_table.hpp); its `commands` say which of `clm3d fit`
+// (a still image's fit: core/track/batch_fit), `clm3d track` (the tracker and the studio's Track
+// form) and `clm3d batch` (both) take it: the search's options all three, the photo fit's own
+// (tilted faces, wider search, refiner runs) fit and batch, the tracker's own track and batch.
+struct TrackerOption : Option<TrackerSettings> {};
 
 const std::vector<TrackerOption>& trackerOptions();
 // nullptr when there is no option of that name.

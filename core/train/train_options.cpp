@@ -119,7 +119,8 @@ std::vector<TrainOption> buildOptions() {
       [](S& s) -> double& { return s.textureVariance; }));
   o.push_back(integerOption<S>(
       spec("texture-max-modes", "Texture max modes", pca,
-           "at most this many modes per patch PCA (0 = no cap); a cap makes smaller, faster models",
+           "at most this many modes per patch PCA (0 = no cap: a model trained with photos grows "
+           "several times larger); a cap makes smaller, faster models",
            0, 1000),
       [](S& s) -> int& { return s.textureMaxModes; }));
   o.push_back(realOption<S>(spec("shape-variance", "Shape variance", pca,
@@ -186,6 +187,7 @@ std::vector<TrainOption> buildOptions() {
            "core free). The model does not depend on it",
            0, 64),
       [](S& s) -> int& { return s.threads; }));
+  for (TrainOption& option : o) option.commands = only(OptionCommand::Train);  // and its form
   return o;
 }
 

@@ -101,8 +101,7 @@ void setOptionFieldText(QWidget* field, const std::string& value) {
   }
 }
 
-QString optionTooltip(const OptionSpec& option, const std::string& defaultText,
-                      const QString& command) {
+QString optionTooltip(const OptionSpec& option, const std::string& defaultText) {
   QString range;
   if (option.kind == OptionKind::Integer || option.kind == OptionKind::Real) {
     range = QObject::tr(", range %1 to %2").arg(option.minimum).arg(option.maximum);
@@ -113,8 +112,9 @@ QString optionTooltip(const OptionSpec& option, const std::string& defaultText,
     for (const std::string& c : option.choices) choices << qText(c);
     range = QObject::tr(", one of %1").arg(choices.join(QStringLiteral(", ")));
   }
-  return QObject::tr("%1\n\nclm3d %2 --%3 (default %4%5)")
-      .arg(qText(option.help), command, qText(option.name), qText(defaultText), range);
+  return QObject::tr("%1\n\nclm3d %2: --%3 (default %4%5)")
+      .arg(qText(option.help), qText(optionCommandsText(option.commands)), qText(option.name),
+           qText(defaultText), range);
 }
 
 QFormLayout* optionGroupForm(std::map<std::string, QFormLayout*>& groups, const std::string& group,

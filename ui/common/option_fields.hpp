@@ -24,9 +24,9 @@ QWidget* makeOptionField(const OptionSpec& option, QWidget* parent,
 // The field's value as the option's text (what Option::set parses) and back.
 std::string optionFieldText(const QWidget* field);
 void setOptionFieldText(QWidget* field, const std::string& text);
-// "help\n\nclm3d COMMAND --name (default D, range A to B)".
-QString optionTooltip(const OptionSpec& option, const std::string& defaultText,
-                      const QString& command);
+// "help\n\nclm3d fit, track, batch: --name (default D, range A to B)": the commands that take the
+// option (OptionSpec::commands).
+QString optionTooltip(const OptionSpec& option, const std::string& defaultText);
 // The form of the section `group` in `groups` (section name -> form), made on first use: a group
 // box titled `group`, owned by `parent`, that `place` puts into the caller's layout.
 QFormLayout* optionGroupForm(std::map<std::string, QFormLayout*>& groups, const std::string& group,

@@ -16,13 +16,15 @@
 namespace clm3d::ui {
 
 QString TrackerSettingsForm::tooltipFor(const TrackerOption& option) {
-  return optionTooltip(option, option.defaultText(), QStringLiteral("track"));
+  return optionTooltip(option, option.defaultText());
 }
 
 TrackerSettingsForm::TrackerSettingsForm(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   std::map<std::string, QFormLayout*> groups;
-  for (const TrackerOption& option : trackerOptions()) {
+  // The options of `clm3d track`: the ones a photo's fit alone reads are not the tracker's.
+  for (const TrackerOption* scoped : optionsFor(trackerOptions(), OptionCommand::Track)) {
+    const TrackerOption& option = *scoped;
     QFormLayout* form = optionGroupForm(groups, option.group, this,
                                         [layout](QGroupBox* box) { layout->addWidget(box); });
     QWidget* widget = makeOptionField(option, this, [this] { emit changed(); });

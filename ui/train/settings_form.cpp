@@ -25,14 +25,14 @@ SettingsForm::SettingsForm(QWidget* parent) : QWidget(parent) {
   const std::map<std::string, QVBoxLayout*> columnOf = {
       {"Views", first}, {"Patches", first}, {"Experts", first}};
   std::map<std::string, QFormLayout*> groups;
-  for (const TrainOption& option : trainOptions()) {
+  for (const TrainOption* scoped : optionsFor(trainOptions(), OptionCommand::Train)) {
+    const TrainOption& option = *scoped;
     QFormLayout* form = optionGroupForm(groups, option.group, this, [&](QGroupBox* box) {
       const auto column = columnOf.find(option.group);
       (column != columnOf.end() ? column->second : second)->addWidget(box);
     });
     QWidget* field = makeOptionField(option, this, [] {});
-    addOptionRow(form, option, field,
-                 optionTooltip(option, option.defaultText(), QStringLiteral("train")));
+    addOptionRow(form, option, field, optionTooltip(option, option.defaultText()));
     fields_.push_back({&option, field});
   }
   first->addStretch(1);
