@@ -94,7 +94,6 @@ RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
   std::cerr << "demo: training the real-face model of " << args.realManifest.string()
             << " (minutes)\n";
   TrainSettings settings;
-  settings.textureMaxModes = 16;  // as docs/real-faces.md: 17 MB instead of 139 MB
   settings.threads = args.threads;
   const auto trainStart = std::chrono::steady_clock::now();
   DecileProgress progress = stderrProgress("real-face training");

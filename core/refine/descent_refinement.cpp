@@ -175,6 +175,14 @@ RefinedPoints refineAndCheck(const DescentRefiner& refiner, const cv::Mat& image
   return out;
 }
 
+std::vector<double> descentWindows(int stages, double last, double growth) {
+  std::vector<double> windows;
+  for (int stage = 0; stage < stages; ++stage) {
+    windows.push_back(last * std::pow(growth, stages - 1 - stage));
+  }
+  return windows;
+}
+
 DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
                                    const std::vector<int>& landmarks, int leftEye, int rightEye,
                                    const DescentTrainSettings& settings,

@@ -17,21 +17,6 @@ namespace {
 // A point is refined when at least this share of the photos trusts it (and its mirror image).
 constexpr double kMarkedShare = 0.9;
 
-// The stages' feature windows, in eye distances: the last stage's, and the factor between one
-// stage's and the next's: wide first (a start that is far off), narrower as the points close in.
-// Five stages from 1.0 to 0.35 were better than four from 0.8 (0.0504 against 0.0526 from the
-// detector on 100 held-out LFPW training photos; from the 5-point start 0.0417 against 0.0425).
-constexpr double kLastWindow = 0.35;
-constexpr double kWindowGrowth = 1.3;
-// The regressions' ridge: 0.2 against 0.05 took the same held-out photos from 0.0425 to 0.0415
-// (5-point start), 0.0526 to 0.0528 (detector).
-constexpr double kRidge = 0.2;
-// Each training start's shape taken up to half-way towards another photo's (DescentTrainSettings::
-// otherShape): a search leaves the shape model's idea of the face, not a moved copy of the true
-// one. On 100 held-out LFPW training photos from the detector (rlms): mean 0.0634 -> 0.0603,
-// median 0.0453 -> 0.0410 (1.0: 0.0608, 0.0402); from the 5-point start 0.0479 -> 0.0473 (1.0:
-// 0.0480).
-constexpr double kOtherShape = 0.5;
 // The fewest faces (photos and their mirror images) the refiner's check is learnt from.
 constexpr std::size_t kCheckMinFaces = 40;
 
@@ -98,15 +83,8 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const
   if (faces.empty()) return {};
   if (progress) progress(0.3, "refiner");
 
-  DescentTrainSettings train;
-  train.windows.clear();
-  for (int stage = 0; stage < settings.refinerStages; ++stage) {
-    train.windows.push_back(kLastWindow *
-                            std::pow(kWindowGrowth, settings.refinerStages - 1 - stage));
-  }
-  train.ridge = kRidge;
-  train.otherShape = kOtherShape;
-  train.shapeTerms = true;
+  DescentTrainSettings train;  // its defaults are the refiner's (ridge, other shapes, shape terms)
+  train.windows = descentWindows(settings.refinerStages);
   train.startsPerPhoto = settings.refinerStarts;
   train.seed = settings.seed;
   train.threads = settings.threads;

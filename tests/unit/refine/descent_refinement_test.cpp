@@ -100,7 +100,7 @@ DescentRefiner trainedRefiner() {
 
 TEST(DescentRefinement, BringsStartsOnUnseenFacesCloserToTheTruth) {
   const DescentRefiner& refiner = trainedRefiner();
-  ASSERT_EQ(refiner.stages.size(), 4u);
+  ASSERT_EQ(refiner.stages.size(), DescentTrainSettings{}.windows.size());
   EXPECT_NO_THROW(refiner.validate(10));
   std::mt19937_64 random(99);
   double before = 0.0, after = 0.0;
