@@ -101,16 +101,6 @@ std::vector<FaceBox> rankAndSuppress(std::vector<FaceBox> boxes, double maxIou,
 
 }  // namespace
 
-const char* detectorKindName(DetectorKind kind) {
-  return kind == DetectorKind::DlibHog ? "dlib" : "cascade";
-}
-
-DetectorKind parseDetectorKind(const std::string& name) {
-  if (name == "cascade") return DetectorKind::Cascade;
-  if (name == "dlib") return DetectorKind::DlibHog;
-  throw InputError("unknown face detector '" + name + "'; valid: cascade, dlib");
-}
-
 void FaceDetectorSettings::validate() const {
   if (minFaceSize < 8) throw InputError("face detector: minFaceSize must be at least 8 pixels");
   if (!(scaleFactor > 1.0 && scaleFactor <= 2.0)) {
@@ -285,21 +275,108 @@ struct FaceDetector::Impl {
   }
 };
 
+namespace {
+
+// A detector: its name (the --detector choice), whether this build has it, what it loads and how
+// it searches a prepared (reduced, equalised) grey image. FaceBox::detector says which one found a
+// box, and the box calibration (core/detect/initialisation) which start it places.
+struct DetectorEntry {
+  DetectorKind kind;
+  const char* name;
+  bool (*available)();
+  // Loads what the detector needs; throws as FaceDetector's constructor says.
+  void (*load)(FaceDetector::Impl& impl, const FaceDetectorSettings& settings,
+               const std::filesystem::path& cascadeDir);
+  std::vector<FaceBox> (*search)(FaceDetector::Impl& impl, const cv::Mat& grey,
+                                 const FaceDetectorSettings& settings);
+};
+
+bool alwaysAvailable() {
+  return true;
+}
+
+void loadCascades(FaceDetector::Impl& impl, const FaceDetectorSettings& settings,
+                  const std::filesystem::path& cascadeDir) {
+  if ((settings.dlibFallback || settings.dlibAgreement) && detail::dlibAvailable()) {
+    impl.hog = std::make_unique<detail::DlibHogDetector>();
+  }
+  loadCascade(impl.frontal, cascadePath(cascadeDir, settings.frontalCascade));
+  if (settings.profiles)
+    loadCascade(impl.profile, cascadePath(cascadeDir, settings.profileCascade));
+}
+
+std::vector<FaceBox> searchCascades(FaceDetector::Impl& impl, const cv::Mat& grey,
+                                    const FaceDetectorSettings& settings) {
+  return impl.detectCascade(grey, settings);
+}
+
+void loadDlib(FaceDetector::Impl& impl, const FaceDetectorSettings&, const std::filesystem::path&) {
+  impl.hog = std::make_unique<detail::DlibHogDetector>();
+}
+
+std::vector<FaceBox> searchDlib(FaceDetector::Impl& impl, const cv::Mat& grey,
+                                const FaceDetectorSettings& settings) {
+  std::vector<FaceBox> boxes;
+  impl.hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, boxes);
+  return rankAndSuppress(std::move(boxes), settings.overlapIou, 1.0);
+}
+
+// The detectors, in the order lists and help show them. A new detector is a DetectorKind, its
+// load and search functions and one line here (docs/architecture.md).
+const std::vector<DetectorEntry>& detectorRegistry() {
+  static const std::vector<DetectorEntry> entries = {
+      // DETECTOR ENTRIES (one line each: {kind, "name", available, load, search},)
+      {DetectorKind::Cascade, "cascade", &alwaysAvailable, &loadCascades, &searchCascades},
+      {DetectorKind::DlibHog, "dlib", &detail::dlibAvailable, &loadDlib, &searchDlib},
+  };
+  return entries;
+}
+
+const DetectorEntry& entryOf(DetectorKind kind) {
+  for (const DetectorEntry& entry : detectorRegistry()) {
+    if (entry.kind == kind) return entry;
+  }
+  throw Error("face detector " + std::to_string(static_cast<int>(kind)) + " is not registered");
+}
+
+}  // namespace
+
+const char* detectorKindName(DetectorKind kind) {
+  return entryOf(kind).name;
+}
+
+DetectorKind parseDetectorKind(const std::string& name) {
+  for (const DetectorEntry& entry : detectorRegistry()) {
+    if (entry.name == name) return entry.kind;
+  }
+  std::string valid;
+  for (const std::string& known : detectorNames()) valid += (valid.empty() ? "" : ", ") + known;
+  throw InputError("unknown face detector '" + name + "'; valid: " + valid);
+}
+
+const std::vector<std::string>& detectorNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> result;
+    for (const DetectorEntry& entry : detectorRegistry()) result.emplace_back(entry.name);
+    return result;
+  }();
+  return names;
+}
+
+std::vector<DetectorKind> availableDetectors() {
+  std::vector<DetectorKind> kinds;
+  for (const DetectorEntry& entry : detectorRegistry()) {
+    if (entry.available()) kinds.push_back(entry.kind);
+  }
+  return kinds;
+}
+
 FaceDetector::FaceDetector(DetectorKind kind, const FaceDetectorSettings& settings,
                            const std::filesystem::path& cascadeDir)
     : kind_(kind), settings_(settings) {
   settings_.validate();
   impl_ = std::make_unique<Impl>();
-  if (kind == DetectorKind::DlibHog ||
-      ((settings_.dlibFallback || settings_.dlibAgreement) && available(DetectorKind::DlibHog))) {
-    impl_->hog = std::make_unique<detail::DlibHogDetector>();
-  }
-  if (kind == DetectorKind::Cascade) {
-    loadCascade(impl_->frontal, cascadePath(cascadeDir, settings_.frontalCascade));
-    if (settings_.profiles) {
-      loadCascade(impl_->profile, cascadePath(cascadeDir, settings_.profileCascade));
-    }
-  }
+  entryOf(kind).load(*impl_, settings_, cascadeDir);
 }
 
 FaceDetector::~FaceDetector() = default;
@@ -307,7 +384,7 @@ FaceDetector::FaceDetector(FaceDetector&&) noexcept = default;
 FaceDetector& FaceDetector::operator=(FaceDetector&&) noexcept = default;
 
 bool FaceDetector::available(DetectorKind kind) {
-  return kind != DetectorKind::DlibHog || detail::dlibAvailable();
+  return entryOf(kind).available();
 }
 
 int FaceDetector::profileRegionsSearched() const {
@@ -335,13 +412,7 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
     grey = equalised;
   }
   if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return {};
-  std::vector<FaceBox> boxes;
-  if (kind_ == DetectorKind::Cascade) {
-    boxes = impl_->detectCascade(grey, settings);
-  } else {
-    impl_->hog->detect(grey, settings.minFaceSize, settings.dlibThreshold, boxes);
-    boxes = rankAndSuppress(std::move(boxes), settings.overlapIou, 1.0);
-  }
+  std::vector<FaceBox> boxes = entryOf(kind_).search(*impl_, grey, settings);
   if (scale != 1.0) {
     // Box edges scale exactly with the image (cv::resize keeps the pixel edges aligned).
     for (FaceBox& box : boxes) {

@@ -16,11 +16,18 @@
 
 namespace clm3d {
 
+// The detectors are registered in core/detect/face_detector.cpp (name, availability, what each
+// loads and how it searches), as the optimisers are in core/fit/optimiser_registry.cpp: names,
+// parsing, the --detector choices and FaceDetector all read that one list.
 enum class DetectorKind { Cascade, DlibHog };
 
 // "cascade" / "dlib"; parseDetectorKind throws InputError listing the valid names.
 const char* detectorKindName(DetectorKind kind);
 DetectorKind parseDetectorKind(const std::string& name);
+// Every registered detector's name, in the registry's order.
+const std::vector<std::string>& detectorNames();
+// The registered detectors this build can make (dlib needs dlib at build time).
+std::vector<DetectorKind> availableDetectors();
 
 struct FaceBox {
   cv::Rect2d box;      // input pixels (OpenCV convention: x, y of the top-left corner)
@@ -117,8 +124,9 @@ class FaceDetector {
   // passes are off. What that call paid for them, for measurements and tests.
   int profileRegionsSearched() const;
 
+  struct Impl;  // defined in face_detector.cpp, where the registry's entries load and search it
+
  private:
-  struct Impl;
   DetectorKind kind_;
   FaceDetectorSettings settings_;
   std::unique_ptr<Impl> impl_;

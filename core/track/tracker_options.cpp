@@ -109,8 +109,9 @@ std::vector<TrackerOption> buildOptions() {
       "refiner (models trained with photos have one; docs/fitting.md)",
       [](S& s) -> bool& { return s.refine; }, true));
   options.push_back(choice(
-      "detector", "Face detector", "Search", search, {"cascade", "dlib"},
-      "face detector: cascade (OpenCV) or dlib (HOG)",
+      "detector", "Face detector", "Search", search, detectorNames(),
+      "face detector: cascade (OpenCV's cascades, dlib confirming when built with it) or dlib "
+      "(HOG)",
       [](const S& s) { return std::string(detectorKindName(s.detector)); },
       [](S& s, const std::string& value) { s.detector = parseDetectorKind(value); }));
   options.push_back(integer("start-grid", "Start grid steps", "Search", search, 0, 3,

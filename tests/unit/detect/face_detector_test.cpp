@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "core/detect/initialisation.hpp"
 #include "tests/support/fit_fixture.hpp"
@@ -78,6 +79,33 @@ TEST(FaceDetector, MissingCascadeNamesTheFileAndThePackage) {
   EXPECT_THROW(FaceDetector(DetectorKind::Cascade, settings), InputError);
   EXPECT_EQ(parseDetectorKind("dlib"), DetectorKind::DlibHog);
   EXPECT_THROW(parseDetectorKind("hog"), InputError);
+}
+
+// The registry (core/detect/face_detector.cpp) is the one list: every name parses back to a kind
+// that has that name, the unknown name's error lists them all, and the detectors this build can
+// make are the registered ones FaceDetector::available says yes to, the cascade always among them.
+TEST(FaceDetector, TheRegistryNamesParsesAndListsTheDetectors) {
+  ASSERT_EQ(detectorNames(), (std::vector<std::string>{"cascade", "dlib"}));
+  for (const std::string& name : detectorNames()) {
+    EXPECT_EQ(detectorKindName(parseDetectorKind(name)), name);
+  }
+  try {
+    parseDetectorKind("hog");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    for (const std::string& name : detectorNames()) {
+      EXPECT_TRUE(test::contains(error.what(), name)) << error.what();
+    }
+  }
+  const std::vector<DetectorKind> available = availableDetectors();
+  ASSERT_FALSE(available.empty());
+  EXPECT_EQ(available.front(), DetectorKind::Cascade);
+  for (const std::string& name : detectorNames()) {
+    const DetectorKind kind = parseDetectorKind(name);
+    EXPECT_EQ(std::count(available.begin(), available.end(), kind) == 1,
+              FaceDetector::available(kind))
+        << name;
+  }
 }
 
 TEST(FaceDetector, BlankImageHasNoFace) {
