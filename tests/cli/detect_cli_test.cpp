@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/common/data_paths.hpp"
+#include "core/detect/face_detector.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -115,6 +116,9 @@ TEST(DetectCli, LfpwPhotosWhenPresent) {
   EXPECT_TRUE(test::contains(result.output, "detect 3/3 image_0004.jpg"))
       << result.output;  // progress
   const nlohmann::json report = nlohmann::json::parse(test::readFile(out));
+  // "all": the cascade, and dlib's HOG detector where it is built in.
+  ASSERT_EQ(report["detectors"].size(), FaceDetector::available(DetectorKind::DlibHog) ? 2u : 1u)
+      << report.dump();
   for (const auto& detector : report["detectors"]) {
     EXPECT_EQ(detector["images"], 3);
     EXPECT_GE(detector["found"].get<int>(), 2) << detector.dump();

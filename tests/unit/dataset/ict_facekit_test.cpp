@@ -235,6 +235,7 @@ class RealIctModel : public ::testing::Test {
   }
   // Checks every sample is a plausible face and differs from the one before.
   static void expectPlausibleFaces(const std::vector<LandmarkSet>& samples) {
+    ASSERT_GE(samples.size(), 10u) << "too few samples for the share of typical faces below";
     std::size_t typical = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const LandmarkSet& s = samples[i];
@@ -279,6 +280,7 @@ TEST_F(RealIctModel, MirrorPairedExpressionsStaySymmetric) {
                   ["jawOpen", "mouthSmile_L", "mouthSmile_R", "browInnerUp_L", "browInnerUp_R",
                    "eyeBlink_L", "eyeBlink_R", "mouthFrown_L", "mouthFrown_R"])"),
       2);
+  ASSERT_EQ(samples.size(), 20u);  // one per identity: the checks below run on every one
   expectPlausibleFaces(samples);
   // Paired blendshapes add no asymmetry to the identity's own (up to 10 mm, see above).
   for (const auto& s : samples) EXPECT_LT(asymmetry(s), 10.0);
@@ -288,6 +290,7 @@ TEST_F(RealIctModel, AllExpressionsGivePlausibleFaces) {
   // jawLeft/Right and mouthLeft/Right have no mirror partner and move the mouth sideways by up
   // to 18 mm, so these samples are only symmetric-ish.
   const auto samples = sampleShapeOnlyLandmarks(manifest(R"("identities": 30)"), 3);
+  ASSERT_EQ(samples.size(), 30u);  // one per identity: the checks below run on every one
   expectPlausibleFaces(samples);
   for (const auto& s : samples) EXPECT_LT(asymmetry(s), 40.0);
 }

@@ -83,6 +83,8 @@ TEST(WindowMoments, FlatWindowHasNoVariance) {
   std::vector<double> mean;
   std::vector<double> variance;
   windowMoments(region, 5, mean, variance);
+  ASSERT_EQ(mean.size(), 16u);  // 4 x 4 windows of 5 x 5 in 8 x 8
+  ASSERT_EQ(variance.size(), mean.size());
   for (std::size_t i = 0; i < mean.size(); ++i) {
     EXPECT_NEAR(mean[i], 0.25, 1e-12);
     EXPECT_LT(std::abs(variance[i]), 1e-12);

@@ -215,6 +215,7 @@ TEST_F(TrackSessionTest, ReTrackingFramesOfAnEmptyTrackTakesTheirLandmarkCount) 
 
 TEST_F(TrackSessionTest, WithoutAReferenceTheKeyframesAreScored) {
   session.setTrack(track(kFrames), fits(kFrames));
+  ASSERT_EQ(session.errors().size(), static_cast<std::size_t>(kFrames));
   for (const double e : session.errors()) EXPECT_TRUE(std::isnan(e));  // no keyframe yet
   // Every point of frame 2 corrected 6 px to the right: eyes 60 px apart, error 0.1 (eq. 5.1).
   session.truth().setKeyframe(2, row(2, 6.0).points);
@@ -241,6 +242,7 @@ TEST_F(TrackSessionTest, AReferenceIsScoredOnEveryTrackedFrame) {
     }
   }
   session.setReference(std::nullopt);
+  ASSERT_EQ(session.errors().size(), static_cast<std::size_t>(kFrames));
   for (const double e : session.errors()) EXPECT_TRUE(std::isnan(e));
 }
 
@@ -249,6 +251,7 @@ TEST_F(TrackSessionTest, AReferenceWithoutEyesScoresNothing) {
   TrackTable blind = track(kFrames);
   for (TrackRow& r : blind.rows) r.points.col(1).setConstant(kNan);
   session.setReference(blind);
+  ASSERT_EQ(session.errors().size(), static_cast<std::size_t>(kFrames));
   for (const double e : session.errors()) EXPECT_TRUE(std::isnan(e));
 }
 
@@ -257,6 +260,7 @@ TEST_F(TrackSessionTest, WithoutAModelNothingIsScored) {
   EXPECT_EQ(session.scheme(), nullptr);
   session.setTrack(track(kFrames), fits(kFrames));
   session.setReference(track(kFrames, 3.0));
+  ASSERT_EQ(session.errors().size(), static_cast<std::size_t>(kFrames));
   for (const double e : session.errors()) EXPECT_TRUE(std::isnan(e));
 }
 

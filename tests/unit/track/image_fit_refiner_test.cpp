@@ -7,6 +7,7 @@
 // frame that has no face on it.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <random>
@@ -36,6 +37,49 @@ using test::meanPointError;
 
 using test::savePhoto;
 
+// A refiner whose output is known by construction, so that tests of who applies it need not call
+// the code under test for their expected points: one stage with no image weights and shape
+// weights -I, so that it moves the points' normalised shape onto its mean shape, i.e. replaces the
+// points with the mean shape placed on them by the least-squares similarity (Eigen's umeyama
+// below); from several starts (shifted and scaled copies whose mean is the start) the placements
+// average to the same. Its check scores every fit alike: probability 0.8.
+constexpr double kKnownCheckProbability = 0.8;
+DescentRefiner knownRefiner() {
+  DescentRefiner refiner;
+  const DescentRefiner& trained = test::photoRefiner();
+  refiner.landmarks = trained.landmarks;
+  refiner.leftEye = trained.leftEye;
+  refiner.rightEye = trained.rightEye;
+  refiner.meanShape = trained.meanShape;
+  const auto n = static_cast<Eigen::Index>(refiner.landmarks.size());
+  const Eigen::Index d = n * kDescentFeaturesPerPoint;
+  DescentStage stage;
+  stage.featureMean = Eigen::VectorXf::Zero(d);
+  stage.weights = Eigen::MatrixXf::Zero(2 * n, d);
+  stage.bias = Eigen::VectorXf::Zero(2 * n);
+  stage.shapeWeights = -Eigen::MatrixXf::Identity(2 * n, 2 * n);
+  refiner.stages.push_back(stage);
+  refiner.check.featureMean = Eigen::VectorXf::Zero(d);
+  refiner.check.weights = Eigen::VectorXf::Zero(d);
+  refiner.check.offset = std::log(kKnownCheckProbability / (1.0 - kKnownCheckProbability));
+  refiner.validate(25);
+  return refiner;
+}
+
+// What knownRefiner makes of `points`: its mean shape placed on them (every landmark is refined).
+Eigen::Matrix2Xd placedMeanShape(const DescentRefiner& refiner, const Eigen::Matrix2Xd& points) {
+  Eigen::Matrix2Xd chosen(2, static_cast<Eigen::Index>(refiner.landmarks.size()));
+  for (std::size_t i = 0; i < refiner.landmarks.size(); ++i)
+    chosen.col(static_cast<Eigen::Index>(i)) = points.col(refiner.landmarks[i]);
+  const Eigen::Matrix3d transform = Eigen::umeyama(refiner.meanShape, chosen, true);
+  const Eigen::Matrix2Xd placed = (transform.topLeftCorner<2, 2>() * refiner.meanShape).colwise() +
+                                  Eigen::Vector2d(transform.topRightCorner<2, 1>());
+  Eigen::Matrix2Xd out = points;
+  for (std::size_t i = 0; i < refiner.landmarks.size(); ++i)
+    out.col(refiner.landmarks[i]) = placed.col(static_cast<Eigen::Index>(i));
+  return out;
+}
+
 TEST(ImageFitRefiner, TrainedFromPhotosItBringsStartsCloserOnAHeldOutHead) {
   const DescentRefiner& refiner = test::photoRefiner();
   ASSERT_EQ(refiner.stages.size(), 3u);
@@ -62,7 +106,7 @@ TEST(ImageFitRefiner, TrainedFromPhotosItBringsStartsCloserOnAHeldOutHead) {
 
 TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   ClmModel model = fitTestModel();
-  model.refiner = test::photoRefiner();
+  model.refiner = knownRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);  // face.png, and its true points in face.pts: the start
@@ -73,38 +117,58 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   const ImageFitOutcome searched = unrefined.fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
 
+  // The search's points refined (from the default 9 starts) by the known refiner: its mean shape
+  // placed on them.
   ImageFitter refining(model, ImageFitSettings{});
   const ImageFitOutcome refined =
       refining.fitFile(dir / "face.png", dir / "face.pts", dir / "out.pts");
   ASSERT_EQ(refined.status, ImageFitStatus::Ok) << refined.message;
-  // The search's points refined from the default 8 more starts, averaged.
-  const RefinerStarts starts{ImageFitSettings{}.refineRuns - 1};
-  ASSERT_EQ(starts.extra, 8);
-  const Eigen::Matrix2Xd expected =
-      refineAndCheck(model.refiner, scene.image, searched.fit->points, false, starts).points;
-  EXPECT_TRUE(refined.fit->points.isApprox(expected, 1e-9));
-  EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 0.0);
+  const Eigen::Matrix2Xd expected = placedMeanShape(model.refiner, searched.fit->points);
+  EXPECT_LT((refined.fit->points - expected).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 1.0);
+  EXPECT_NEAR(refined.fit->confidence, kKnownCheckProbability, 1e-6);  // the check's
   const LandmarkSet written = readLandmarks(dir / "out.pts", &Scheme::thesis25());
-  EXPECT_NEAR(written.point(12).x(), expected(0, 12), 1e-3);
-  // From the search's points alone.
+  for (int i = 0; i < 25; ++i)
+    EXPECT_LT((written.point(i).head<2>() - expected.col(i)).norm(), 1e-3) << i;
+  // From the search's points alone: the same placement.
   ImageFitSettings oneStart;
   oneStart.refineRuns = 1;
   const ImageFitOutcome single =
       ImageFitter(model, oneStart).fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(single.status, ImageFitStatus::Ok) << single.message;
-  EXPECT_TRUE(single.fit->points.isApprox(
-      refinePoints(model.refiner, scene.image, searched.fit->points), 1e-9));
-  EXPECT_FALSE(single.fit->points.isApprox(expected, 1e-6));
+  EXPECT_LT((single.fit->points - expected).cwiseAbs().maxCoeff(), 1e-3);
+}
+
+// With a trained refiner, more starts average to other points than one start does (a linear
+// stage from nearby starts is not the same stage from the start alone).
+TEST(ImageFitRefiner, RefiningFromMoreStartsChangesTheTrainedRefinersPoints) {
+  ClmModel model = fitTestModel();
+  model.refiner = test::photoRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  ImageFitSettings oneStart;
+  oneStart.refineRuns = 1;
+  const ImageFitOutcome single =
+      ImageFitter(model, oneStart).fitFile(dir / "face.png", dir / "face.pts");
+  const ImageFitOutcome several =
+      ImageFitter(model, ImageFitSettings{}).fitFile(dir / "face.png", dir / "face.pts");
+  ASSERT_EQ(single.status, ImageFitStatus::Ok) << single.message;
+  ASSERT_EQ(several.status, ImageFitStatus::Ok) << several.message;
+  EXPECT_GT((single.fit->points - several.fit->points).cwiseAbs().maxCoeff(), 1e-3);
+  // Both stay near the truth (the head's render: within 0.1 eye distances on average).
+  EXPECT_LT(meanPointError(several.fit->points, scene.truthPoints) / scene.interOcular, 0.1);
 }
 
 TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   ClmModel model = fitTestModel();
-  model.refiner = test::photoRefiner();
+  model.refiner = knownRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead);
   const auto trackOnce = [&](bool refine) {
     TrackerSettings settings;
     settings.refine = refine;
-    // The unrefined row is judged on the search's own confidence: NCC's, which this render passes.
+    // Judged on the search's own confidence (NCC's, which this render passes) when unrefined, on
+    // the known check's 0.8 when refined.
     settings.fit.optimiser = "fastncc";
     Tracker tracker(model, scene.camera, settings);
     tracker.setState(scene.truth, -1);
@@ -115,8 +179,11 @@ TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   ASSERT_TRUE(plain.row.success && refined.row.success);
   EXPECT_TRUE(plain.row.points.isApprox(plain.fit->points, 1e-12));
   EXPECT_TRUE(refined.fit->state.pose.translation.isApprox(plain.fit->state.pose.translation));
-  EXPECT_TRUE(refined.row.points.isApprox(
-      refinePoints(model.refiner, scene.image, plain.fit->points), 1e-9));
+  EXPECT_LT((refined.row.points - placedMeanShape(model.refiner, plain.fit->points))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-3);
+  EXPECT_GT((refined.row.points - plain.row.points).norm(), 1.0);
 }
 
 TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
@@ -133,17 +200,16 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   EXPECT_TRUE(std::isfinite(right.fit->searchConfidence));
   EXPECT_GT(right.fit->confidence, 0.5);
   EXPECT_LE(right.fit->confidence, 1.0);
-  // The confidence is the check of the search's points refined (the same search, unrefined).
-  ImageFitSettings plain;
-  plain.refine = false;
-  const ImageFitOutcome searched =
-      ImageFitter(model, plain).fitFile(dir / "face.png", dir / "face.pts");
-  ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
-  EXPECT_NEAR(right.fit->confidence,
-              refineAndCheck(model.refiner, scene.image, searched.fit->points, true,
-                             RefinerStarts{ImageFitSettings{}.refineRuns - 1})
-                  .rightProbability,
-              1e-9);
+  // The confidence is the check's probability (a check of known output: the fit's confidence is
+  // its 0.8, the search's own kept as searchConfidence).
+  ClmModel known = model;
+  known.refiner = knownRefiner();
+  const ImageFitOutcome judged =
+      ImageFitter(known, ImageFitSettings{}).fitFile(dir / "face.png", dir / "face.pts");
+  ASSERT_EQ(judged.status, ImageFitStatus::Ok) << judged.message;
+  EXPECT_NEAR(judged.fit->confidence, kKnownCheckProbability, 1e-6);
+  EXPECT_TRUE(std::isfinite(judged.fit->searchConfidence));
+  EXPECT_GT(std::abs(judged.fit->searchConfidence - kKnownCheckProbability), 1e-3);
   // Points moved by most of an eye distance stay wrong after refining, and the check says so.
   for (const Eigen::Vector2d& share : {Eigen::Vector2d(0.7, 0.4), Eigen::Vector2d(-0.6, -0.6)}) {
     const Eigen::Matrix2Xd moved = scene.truthPoints.colwise() + share * scene.interOcular;
@@ -229,57 +295,65 @@ TEST(ImageFitRefiner, ATiltedFaceIsFoundInATurnedCopyOfThePhoto) {
       << meanPointError(missed.fit->points, scene.truthPoints) / scene.interOcular;
 }
 
-// A checked frame is reported on the check, but its 3D state starts the next frame only when the
-// search scored above its own threshold; else the next frame is detected afresh (a drifting pose
-// whose refined points are still right must not carry on).
-TEST(ImageFitRefiner, AFrameTheSearchDoubtsIsTrackedButTheNextIsDetected) {
+// A checked frame that passes starts the next frame from the state of its refined points,
+// whatever its search scored: the next frame is searched from there, not detected (issue 27: a
+// frame whose search scored low but whose points passed used to send the next frame back to the
+// detector, 50 of 60 frames re-detected in one real sequence).
+TEST(ImageFitRefiner, APassingFrameContinuesFromItsRefinedPointsNotTheDetector) {
   ClmModel model = fitTestModel();
   model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
-  const auto twoFrames = [&](double minConfidence) {
-    TrackerSettings settings;
-    settings.minConfidence = minConfidence;  // the search's threshold on either scale
-    settings.minExpertConfidence = minConfidence;
-    Tracker tracker(model, scene.camera, settings);
-    tracker.setState(scene.truth, -1);
-    TrackStep first = tracker.track(scene.image, 0, 0.0);
-    TrackStep second = tracker.track(scene.image, 1, 0.04);
-    return std::pair{std::move(first), std::move(second)};
-  };
-  const auto [trusted, next] = twoFrames(0.0);
-  ASSERT_TRUE(trusted.row.success);
-  EXPECT_FALSE(next.detected);
-  const auto [doubted, detected] = twoFrames(0.999);
-  ASSERT_TRUE(doubted.fit.has_value());
-  ASSERT_LT(doubted.fit->searchConfidence, 0.999);
-  EXPECT_TRUE(doubted.row.success) << toString(doubted.failure);
-  EXPECT_TRUE(detected.detected);
-}
-
-// A doubted frame's state is the fallback of the next frame's detection: a face the detector
-// cannot find (here smaller than its smallest box) is searched from it and still tracked.
-TEST(ImageFitRefiner, WhenTheDetectorFindsNoFaceTheDoubtedStateIsSearched) {
-  ClmModel model = fitTestModel();
-  model.refiner = test::photoRefiner();
-  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead, 17.0);
-  FaceDetector detector;
-  ASSERT_TRUE(detector.detect(scene.image).empty()) << "the premise: no face found";
   TrackerSettings settings;
-  settings.minConfidence = 0.999;  // every search doubted, on either scale
+  settings.minConfidence = 0.999;  // the search's own thresholds, on either scale: not judged
   settings.minExpertConfidence = 0.999;
   Tracker tracker(model, scene.camera, settings);
   tracker.setState(scene.truth, -1);
   const TrackStep first = tracker.track(scene.image, 0, 0.0);
   ASSERT_TRUE(first.row.success) << toString(first.failure);
-  ASSERT_LT(first.fit->searchConfidence, 0.999);
+  ASSERT_LT(first.fit->searchConfidence, 0.999) << "the premise: a search below its threshold";
+  // The carried state reproduces the refined points the frame output closer than the search's own
+  // state does. Not exactly: this fixture's refiner places a 2D mean shape that the 3D shape model
+  // (modes clamped to +-3 SD) cannot reproduce (measured: 0.027 against the search's 0.029).
+  const auto offPoints = [&](const FitState& state) {
+    const Eigen::Matrix2Xd projected = projectState(model, scene.camera, state);
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < projected.cols(); ++i) {
+      if (!first.fit->modelled[static_cast<std::size_t>(i)]) continue;
+      sum += (projected.col(i) - first.row.points.col(i)).norm();
+      ++count;
+    }
+    return sum / count / scene.interOcular;
+  };
+  const double carried = offPoints(tracker.nextStart());
+  const double searched = offPoints(first.fit->state);
+  EXPECT_LT(carried, 0.03);
+  EXPECT_LT(carried, searched - 0.001) << "carried " << carried << ", the search's " << searched;
   const TrackStep second = tracker.track(scene.image, 1, 0.04);
   EXPECT_FALSE(second.detected);
   EXPECT_TRUE(second.row.success) << toString(second.failure);
   EXPECT_LT(meanPointError(second.row.points, scene.truthPoints) / scene.interOcular, 0.15);
-  // Lost (a frame without the face), the fallback is gone too.
+}
+
+// A face the detector cannot find (here smaller than its smallest box) is tracked frame to frame
+// from a given start; once a frame without it loses the track, only the detector can find it.
+TEST(ImageFitRefiner, AFaceTheDetectorMissesIsTrackedFromFrameToFrame) {
+  ClmModel model = fitTestModel();
+  model.refiner = test::photoRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead, 17.0);
+  FaceDetector detector;
+  ASSERT_TRUE(detector.detect(scene.image).empty()) << "the premise: no face found";
+  Tracker tracker(model, scene.camera, TrackerSettings{});
+  tracker.setState(scene.truth, -1);
+  for (int frame = 0; frame < 3; ++frame) {
+    const TrackStep step = tracker.track(scene.image, frame, 0.04 * frame);
+    EXPECT_FALSE(step.detected) << "frame " << frame;
+    ASSERT_TRUE(step.row.success) << "frame " << frame << ": " << toString(step.failure);
+    EXPECT_LT(meanPointError(step.row.points, scene.truthPoints) / scene.interOcular, 0.15);
+  }
   cv::Mat blank(scene.image.size(), scene.image.type(), cv::Scalar::all(128));
-  EXPECT_FALSE(tracker.track(blank, 2, 0.08).row.success);
-  EXPECT_FALSE(tracker.track(scene.image, 3, 0.12).row.success);
+  EXPECT_FALSE(tracker.track(blank, 3, 0.12).row.success);
+  EXPECT_FALSE(tracker.track(scene.image, 4, 0.16).row.success);
 }
 
 // The face's box as the detector's calibration places it around the scene's eyes, its side

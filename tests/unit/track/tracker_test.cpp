@@ -235,8 +235,10 @@ TEST(Tracker, TheAutoOptimiserIsResolvedForTheModel) {
 }
 
 // Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
-// view's visibility. Compared with the depth-tested truth of the renders over a turn to 40 degrees
-// (measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found).
+// view's visibility. Judged against an independent oracle, the renderer's depth test (a landmark
+// behind the rendered depth buffer is hidden: SequenceFrame::visible), over a turn to 40 degrees.
+// Measured: 264 of 275 landmark-frames agree; 16 of the 19 hidden ones are found. Reporting every
+// point visible would agree on 256 and find none, so both bounds below fail it.
 TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
   const ClmModel& model = test::fitTestModel();
   const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
@@ -257,7 +259,6 @@ TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
     const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
     ASSERT_TRUE(step.fit.has_value()) << "frame " << i;
     ASSERT_EQ(step.row.visibility.size(), 25u);
-    EXPECT_EQ(step.row.visibility, landmarkVisibility(model, step.fit->state.pose));
     for (std::size_t k = 0; k < 25; ++k) {
       ASSERT_NE(step.row.visibility[k], Visibility::Unknown);
       const bool visible = step.row.visibility[k] == Visibility::Visible;
@@ -270,7 +271,10 @@ TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
   std::cout << "[ visibility agrees with the renders' depth test for " << agree << " of " << total
             << " landmark-frames; " << hiddenFound << " of " << hiddenTruth
             << " hidden ones found ]\n";
-  EXPECT_GT(agree, 0.9 * total);
+  ASSERT_EQ(total, 275);       // 11 frames of 25 landmarks
+  ASSERT_GE(hiddenTruth, 15);  // the turn hides points (19)
+  EXPECT_GE(hiddenFound, 14);  // 16 found
+  EXPECT_GE(agree, 261);       // 264; every point visible would give 256
 
   // The nearest view decides, whatever view the fit used.
   Pose pose = Pose::fromDegrees(0.0, 40.0, 0.0, {0.0, 0.0, -600.0});

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -372,15 +373,40 @@ TEST(Augmentation, TrainedModelIsTheSameWhateverTheThreadCount) {
 }
 
 // A contact sheet of augmented training renders for docs/training.md; written to
-// $CLM3D_AUGMENTATION_SHEET when set (docs/images/augmentation-samples.png).
+// $CLM3D_AUGMENTATION_SHEET when set (docs/images/augmentation-samples.png). What the sheet shows
+// is checked: every tile differs from the same sample and view rendered without augmentation (on
+// the background, the clutter, and on the face, light and colour), the two samples of each view
+// differ from each other, and the sheet holds the 4 x 2 tiles.
 TEST(Augmentation, ContactSheetOfAugmentedRenders) {
   const AugmentationSettings all = everyEffect(75);
   std::vector<cv::Mat> tiles;
   std::vector<std::string> captions;
   const std::vector<ViewCentre> views{{0, 0}, {0, -30}, {-30, 30}, {30, -60}};
+  // The share of `mask`'s pixels where two BGR images differ by more than 10 grey levels.
+  const auto changedShare = [](const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
+    cv::Mat diff;
+    cv::absdiff(a, b, diff);
+    cv::cvtColor(diff, diff, cv::COLOR_BGR2GRAY);
+    return static_cast<double>(cv::countNonZero((diff > 10) & mask)) /
+           std::max(1, cv::countNonZero(mask));
+  };
   for (int sample = 0; sample < 8; ++sample) {
     const ViewCentre view = views[static_cast<std::size_t>(sample) % views.size()];
     const Rendered r = renderWith(all, sample, view);
+    const Rendered plain = renderWith(AugmentationSettings::off(), sample, view);
+    ASSERT_EQ(r.image.image.type(), CV_8UC3);
+    ASSERT_EQ(r.image.image.size(), plain.image.image.size());
+    cv::Mat plainBgr = plain.image.image;  // the render as it is: BGRA, on black
+    if (plainBgr.channels() == 4) cv::cvtColor(plainBgr, plainBgr, cv::COLOR_BGRA2BGR);
+    const cv::Mat face = alphaOf(plain.image.render.bgra) > 0;
+    const cv::Mat background = alphaOf(plain.image.render.bgra) == 0;
+    EXPECT_GT(changedShare(r.image.image, plainBgr, background), 1.0 / 3.0) << sample;
+    EXPECT_GT(changedShare(r.image.image, plainBgr, face), 0.05) << sample;
+    if (sample >= static_cast<int>(views.size())) {
+      const cv::Mat& sameView = tiles[static_cast<std::size_t>(sample) - views.size()];
+      const cv::Mat everywhere(face.size(), CV_8UC1, cv::Scalar(255));
+      EXPECT_GT(changedShare(r.image.image, sameView, everywhere), 0.1) << sample;
+    }
     tiles.push_back(r.image.image);
     captions.push_back("pitch " + std::to_string(static_cast<int>(view.pitchDeg)) + " yaw " +
                        std::to_string(static_cast<int>(view.yawDeg)) +
@@ -390,6 +416,8 @@ TEST(Augmentation, ContactSheetOfAugmentedRenders) {
   }
   const cv::Mat sheet = makeContactSheet(tiles, 4, captions);
   EXPECT_EQ(sheet.type(), CV_8UC3);
+  EXPECT_GE(sheet.cols, 4 * tiles.front().cols);
+  EXPECT_GE(sheet.rows, 2 * tiles.front().rows);
   if (const char* out = std::getenv("CLM3D_AUGMENTATION_SHEET")) writeImage(out, sheet);
 }
 
