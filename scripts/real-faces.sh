@@ -90,34 +90,49 @@ for optimiser in rlms fastncc; do
     --pred-dir "$OUT/fits/$optimiser-offset" --points 1-18,22 --roc | grep -E "ROC|accepting"
 done
 
-# 5. Photo sequences: the first SEQUENCES test photos moving smoothly, tracked with rlms.
-echo "== $SEQUENCES photo sequences of $FRAMES frames"
-n=0
-for img in "$TEST"/*.jpg; do
-  (( n++ < SEQUENCES )) || break
-  stem=$(basename "${img%.jpg}")
-  seq=$OUT/sequences/$stem
+# 5. Photo sequences: the first SEQUENCES test photos moving smoothly, and the last ROLLZOOM test
+# photos rolling to 45 degrees and zooming 0.6-1.6x (stems rz_*), tracked with rlms. Each line
+# counts the detections (the first frame's and every re-detection) from the track's summary.
+ROLLZOOM=${ROLLZOOM:-5}
+echo "== $SEQUENCES photo sequences of $FRAMES frames, and $ROLLZOOM rolling to 45 degrees and zooming 0.6-1.6x"
+track_sequence() {  # STEM IMAGE SEED [synth options]
+  local stem=$1 img=$2 seed=$3 seq=$OUT/sequences/$1
+  shift 3
   [[ -f $seq/truth.csv ]] ||
-    "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --frames "$FRAMES" --seed "$n" \
-      --out "$seq" > /dev/null 2>&1
+    "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --frames "$FRAMES" --seed "$seed" \
+      "$@" --out "$seq" > /dev/null 2>&1
   [[ -f $OUT/tracks/$stem.csv ]] ||
     "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
       > "$OUT/logs/track-$stem.log" 2>&1
+}
+n=0
+for img in "$TEST"/*.jpg; do
+  (( n++ < SEQUENCES )) || break
+  track_sequence "$(basename "${img%.jpg}")" "$img" "$n"
 done
-truths=(); preds=()
-for tracks in "$OUT"/tracks/image_*.csv; do
-  stem=$(basename "${tracks%.csv}")
-  truths+=("$OUT/sequences/$stem/truth.csv"); preds+=("$tracks")
-  "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" --json \
-    > "$OUT/tracks/$stem.eval.json" 2>/dev/null || true
-  "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" | awk -v stem="$stem" '
-    /^  frames:/ { split($2, n, "/"); tracked = $4; wrong = substr($6, 2) }
-    /^  error:/ { mean = $3; sub(",", "", mean) }
-    /points within/ { within = $7 }
-    END { printf "%-12s %s/%s tracked, %s above 0.3, mean %s, within 0.18 %s\n", stem, tracked, n[2], wrong, mean, within }'
+n=0
+for img in $(ls "$TEST"/*.jpg | tail -n "$ROLLZOOM"); do
+  (( ++n ))
+  track_sequence "rz_$(basename "${img%.jpg}")" "$img" "$n" --photo-roll 45 --photo-zoom 0.6:1.6
 done
-echo "all sequences, pooled:"
-"$CLM3D" eval --truth "${truths[@]}" --pred "${preds[@]}" --label clm3d | grep -E "^  (frames|error|convergence)"
+for group in image rz_image; do
+  truths=(); preds=(); detections=0
+  for tracks in "$OUT"/tracks/${group}_*.csv; do
+    stem=$(basename "${tracks%.csv}")
+    truths+=("$OUT/sequences/$stem/truth.csv"); preds+=("$tracks")
+    found=$(grep -o "[0-9]* detections" "$OUT/logs/track-$stem.log" | grep -o "[0-9]*" || echo "?")
+    [[ $found == "?" ]] || detections=$((detections + found))
+    "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" --json \
+      > "$OUT/tracks/$stem.eval.json" 2>/dev/null || true
+    "$CLM3D" eval --truth "$OUT/sequences/$stem/truth.csv" --pred "$tracks" | awk -v stem="$stem" -v found="$found" '
+      /^  frames:/ { split($2, n, "/"); tracked = $4; wrong = substr($6, 2) }
+      /^  error:/ { mean = $3; sub(",", "", mean) }
+      /points within/ { within = $7 }
+      END { printf "%-16s %s/%s tracked, %s above 0.3, mean %s, within 0.18 %s, %s detections\n", stem, tracked, n[2], wrong, mean, within, found }'
+  done
+  echo "${group}_* sequences, pooled ($detections detections, ${#preds[@]} of them first frames):"
+  "$CLM3D" eval --truth "${truths[@]}" --pred "${preds[@]}" --label clm3d | grep -E "^  (frames|error|convergence)"
+done
 
 # 6. franck.mp4: clm3d's track against dlib on every 10th frame (no truth): the frames as images
 # (clm3d frames), dlib on them, clm3d's points per frame (clm3d truth --pts), paired by file stem.

@@ -79,7 +79,6 @@ void Tracker::reset() {
 void Tracker::lose() {
   state_.reset();
   before_.reset();
-  doubted_.reset();
   view_ = -1;
   smoother_.restart();
 }
@@ -87,7 +86,6 @@ void Tracker::lose() {
 void Tracker::setState(const FitState& state, int view) {
   state_ = state;
   before_.reset();
-  doubted_.reset();
   view_ = view;
   lastFace_.reset();
   smoother_.restart();
@@ -185,8 +183,13 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   return TrackFailure::None;
 }
 
-bool Tracker::trustsState(const FitResult& fit) const {
-  return std::isnan(fit.searchConfidence) || fit.searchConfidence >= minConfidence();
+FitState Tracker::carriedState(const FitResult& fit) const {
+  if (std::isnan(fit.searchConfidence)) return fit.state;  // unchecked: the search's own state
+  try {
+    return stateNearPoints(*model_, camera_, fit.points, fit.modelled, fit.state);
+  } catch (const InputError&) {
+    return fit.state;  // too few modelled points to place the model: keep the search's state
+  }
 }
 
 TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
@@ -246,31 +249,15 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
       step.failure = TrackFailure::NoFace;
     }
   }
-  // No detected face gave a fit that passes, after a frame tracked with a doubted search: search
-  // from that frame's state too (a rolled or zoomed face the detector misses is not dropped).
-  if (const auto doubted = std::exchange(doubted_, std::nullopt);
-      doubted && step.failure != TrackFailure::None) {
-    attempt(doubted->first, doubted->second);
-  }
-
   step.fitMilliseconds = searchMs;
   if (step.failure == TrackFailure::None && step.fit) {
-    if (trustsState(*step.fit)) {
-      if (fromPrevious && !step.detected) {
-        before_ = state_;
-      } else {
-        before_.reset();  // a detection is no motion
-      }
-      state_ = step.fit->state;
-      view_ = step.fit->view;
+    if (fromPrevious && !step.detected) {
+      before_ = state_;
     } else {
-      // Tracked (its refined points passed the check), but the next frame starts from the
-      // detector, not from this search's 3D state, which stays the fallback.
-      state_.reset();
-      before_.reset();
-      view_ = -1;
-      doubted_.emplace(step.fit->state, step.fit->view);
+      before_.reset();  // a detection is no motion
     }
+    state_ = carriedState(*step.fit);
+    view_ = step.fit->view;
   } else {
     lose();
   }

@@ -168,9 +168,11 @@ class Tracker {
 
  private:
   TrackFailure judge(const FitResult& fit) const;
-  // Whether a tracked fit's 3D state may start the next frame: always, unless the check passed
-  // a fit whose search scored below the search's own threshold (then the next frame is detected).
-  bool trustsState(const FitResult& fit) const;
+  // The state a passing frame hands to the next: for a checked fit, the state nearest the
+  // search's that reproduces the refined points the check passed (stateNearPoints), so that the
+  // next search starts where the output points are, not where the search's own 3D state drifted;
+  // otherwise the search's state.
+  FitState carriedState(const FitResult& fit) const;
   template <typename Attempt>
   void searchNeighbouringViews(TrackStep& step, Attempt& attempt);
   FaceDetector& detector();
@@ -188,9 +190,6 @@ class Tracker {
   // The centre of the last tracked frame's points, kept while the track is lost (not by reset or
   // setState): a detection prefers the face there (preferFacesAt).
   std::optional<cv::Point2d> lastFace_;
-  // The state and view of the last frame tracked with a search below its own threshold: the next
-  // frame is detected, and searched from here when no detected face passes.
-  std::optional<std::pair<FitState, int>> doubted_;
   PointSmoother smoother_;
   std::pair<int, int> eyes_;  // the scheme's normalisation pair (parsed once)
 };
