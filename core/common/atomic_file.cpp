@@ -62,6 +62,20 @@ std::string readTextFile(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, ec)) throwInputError(path, "is a folder, not a file");
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throwInputError(path, "cannot open for reading");
+  // A regular file is read in one call into a string of its size: a growing stream buffer copied
+  // an 18 MB model about three times over (a third of its load time).
+  if (const auto size = std::filesystem::file_size(path, ec);
+      !ec && std::filesystem::is_regular_file(path, ec)) {
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    stream.read(bytes.data(), static_cast<std::streamsize>(size));
+    if (stream.bad()) throwInputError(path, "read failed");
+    bytes.resize(static_cast<std::size_t>(stream.gcount()));
+    if (stream.peek() == std::char_traits<char>::eof()) return bytes;
+    // The file grew while it was read: take the rest too.
+    std::ostringstream rest;
+    rest << stream.rdbuf();
+    return bytes + rest.str();
+  }
   std::ostringstream buffer;
   buffer << stream.rdbuf();
   if (stream.bad()) throwInputError(path, "read failed");

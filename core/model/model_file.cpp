@@ -533,19 +533,40 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
 }  // namespace
 
 std::uint32_t crc32(std::string_view bytes) {
-  static const std::array<std::uint32_t, 256> table = [] {
-    std::array<std::uint32_t, 256> result{};
+  // Slice-by-8: table k holds the CRC of a byte followed by k zero bytes, so eight bytes are folded
+  // in with eight look-ups and no serial dependence between them (about 4x the byte-at-a-time
+  // loop; the checksum of an 18 MB model was a fifth of its load time).
+  using Tables = std::array<std::array<std::uint32_t, 256>, 8>;
+  static const Tables tables = [] {
+    Tables result{};
     for (std::uint32_t i = 0; i < 256; ++i) {
       std::uint32_t c = i;
       for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      result[i] = c;
+      result[0][i] = c;
+    }
+    for (std::size_t k = 1; k < 8; ++k) {
+      for (std::size_t i = 0; i < 256; ++i) {
+        const std::uint32_t previous = result[k - 1][i];
+        result[k][i] = (previous >> 8) ^ result[0][previous & 0xFFu];
+      }
     }
     return result;
   }();
   std::uint32_t crc = 0xFFFFFFFFu;
-  for (const char byte : bytes) {
-    crc = table[(crc ^ static_cast<unsigned char>(byte)) & 0xFFu] ^ (crc >> 8);
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  std::size_t left = bytes.size();
+  const auto word = [](const unsigned char* p) {  // little-endian, whatever the machine's order
+    return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+           static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+  };
+  for (; left >= 8; left -= 8, data += 8) {
+    const std::uint32_t low = crc ^ word(data);
+    const std::uint32_t high = word(data + 4);
+    crc = tables[7][low & 0xFFu] ^ tables[6][(low >> 8) & 0xFFu] ^ tables[5][(low >> 16) & 0xFFu] ^
+          tables[4][low >> 24] ^ tables[3][high & 0xFFu] ^ tables[2][(high >> 8) & 0xFFu] ^
+          tables[1][(high >> 16) & 0xFFu] ^ tables[0][high >> 24];
   }
+  for (; left > 0; --left, ++data) crc = tables[0][(crc ^ *data) & 0xFFu] ^ (crc >> 8);
   return crc ^ 0xFFFFFFFFu;
 }
 

@@ -48,6 +48,8 @@ std::string withPayload(const std::string& file, const std::string& payload) {
 TEST(ModelFile, Crc32MatchesTheStandardCheckValue) {
   EXPECT_EQ(crc32("123456789"), 0xCBF43926u);
   EXPECT_EQ(crc32(""), 0u);
+  // Five 8-byte slices and a tail of three.
+  EXPECT_EQ(crc32("The quick brown fox jumps over the lazy dog"), 0x414FA339u);
 }
 
 TEST(ModelFile, RoundTripIsBitExact) {
