@@ -30,6 +30,18 @@ report_times() {
   echo "== stage times (s)"
   for i in "${!stage_names[@]}"; do printf '%6d  %s\n' "${stage_times[$i]}" "${stage_names[$i]}"; done
   printf '%6d  total%s\n' $((SECONDS - run_start)) "$([[ $status -eq 0 ]] || echo ", stopped by a failure")"
+  slurm_line
+}
+# Whether the Slurm test (tests/slurm) ran or why it skipped: its verdict file, written by the test
+# itself during the release tests (ctest shows a skip without its reason).
+slurm_status=build/release/slurm-test-status.txt
+slurm_line() {
+  [ "${release_tests_started:-0}" = 1 ] || return 0
+  if [ -f "$slurm_status" ]; then
+    echo "== Slurm test: $(cat "$slurm_status")"
+  else
+    echo "== Slurm test: no verdict (it did not run, or stopped before starting Slurm)"
+  fi
 }
 trap report_times EXIT
 
@@ -57,4 +69,6 @@ fi
 stage "release build" bash -c 'cmake --preset release -DCLM3D_WERROR=ON > /dev/null &&
   cmake --build --preset release -j "$1"' _ "$jobs"
 stage "package (cpack -G DEB, install into a temporary root, run)" bash scripts/package-test.sh build/release
+rm -f "$slurm_status"
+release_tests_started=1
 stage "release tests (every test)" ctest --preset release -j "$jobs"
