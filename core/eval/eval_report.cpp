@@ -39,6 +39,7 @@ json sequenceJson(const SequenceEvaluation& sequence) {
                         {"converged", frame.converged},
                         {"error", number(frame.error)},
                         {"jitter", number(frame.jitter)},
+                        {"nmj", number(frame.nmj)},
                         {"sequence", frame.sequence}});
   }
   return {{"label", sequence.label},
@@ -68,6 +69,7 @@ json sequenceJson(const SequenceEvaluation& sequence) {
           {"motion",
            {{"jitter", number(s.jitter)},
             {"jitter_frames", s.jitterFrames},
+            {"nmj", number(s.nmj)},
             {"lag_frames", number(s.lagFrames)}}},
           {"regions", regionsJson(s)},
           {"cdf", cdf},
@@ -344,7 +346,8 @@ std::string formatReportText(const EvaluationReport& report) {
       out += " " + region.name + " " + formatErrorValue(region.mean);
     out += ", all " + formatErrorValue(s.meanPointError) + "\n";
     out += "  motion: jitter " + formatErrorValue(s.jitter) + " over " +
-           std::to_string(s.jitterFrames) + " frame pairs, lag " + formatFrames(s.lagFrames) +
+           std::to_string(s.jitterFrames) + " frame pairs, NMJ " + formatErrorValue(s.nmj) +
+           ", lag " + formatFrames(s.lagFrames) +
            " frames\n";
   }
   const std::string comparison = formatComparison(report);

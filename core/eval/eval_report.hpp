@@ -72,10 +72,10 @@ EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& tr
 // {"format": "clm3d-evaluation", "version": 1, "scheme", "truth", "threshold", "predictions": [
 // {"label", "file", "frames": {...}, "error": {mean, median, sd, min, max}, "convergence_rate",
 // "points_within_threshold", "mean_point_error", "motion": {"jitter", "jitter_frames",
-// "lag_frames"}, "regions": [...], "cdf": [...], "per_frame": [{"frame", "error", "success",
-// "converged", "jitter", "sequence"}]}], "comparison": {...} or null, "truths": [...], and with
-// buckets "buckets": {"column", "absolute", "edges", "predictions": [{"label", "outside",
-// "buckets": [{"low", "high", "frames", "scored", "mean", "median", "convergence_rate",
+// "nmj", "lag_frames"}, "regions": [...], "cdf": [...], "per_frame": [{"frame", "error",
+// "success", "converged", "jitter", "nmj", "sequence"}]}], "comparison": {...} or null,
+// "truths": [...], and with buckets "buckets": {"column", "absolute", "edges", "predictions":
+// [{"label", "outside", "buckets": [{"low", "high", "frames", "scored", "mean", "median", "convergence_rate",
 // "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too. NaN is null.
 std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
@@ -93,7 +93,7 @@ std::string formatPValue(double p);
 std::string formatComparison(const EvaluationReport& report);
 
 // A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
-// threshold, per-region means, jitter and lag; then the test; then the buckets' tables.
+// threshold, per-region means, jitter, NMJ and lag; then the test; then the buckets' tables.
 std::string formatReportText(const EvaluationReport& report);
 
 // The buckets as Markdown tables (docs/evaluation.md): per tracker the mean and median error,

@@ -16,6 +16,19 @@ bool hasPoint(const Eigen::Matrix2Xd& points, int i) {
   return std::isfinite(points(0, i)) && std::isfinite(points(1, i));
 }
 
+// sqrt(width x height) of the box around the present points; 0 for fewer than two or a flat box.
+double pointBoxSize(const Eigen::Matrix2Xd& points) {
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d high = -low;
+  for (int i = 0; i < static_cast<int>(points.cols()); ++i) {
+    if (!hasPoint(points, i)) continue;
+    low = low.cwiseMin(points.col(i));
+    high = high.cwiseMax(points.col(i));
+  }
+  if (!(high.x() > low.x()) || !(high.y() > low.y())) return 0.0;
+  return std::sqrt((high.x() - low.x()) * (high.y() - low.y()));
+}
+
 // Error of one truth frame against its prediction row (nullptr when the prediction lacks it).
 FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const Scheme& scheme,
                       const EvalOptions& options) {
@@ -31,6 +44,7 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
   if (hasPoint(truth.points, first) && hasPoint(truth.points, second)) {
     result.interOcular = (truth.points.col(first) - truth.points.col(second)).norm();
   }
+  result.faceSize = pointBoxSize(truth.points);
   result.normalised = result.interOcular > 1e-9;
   result.predicted = prediction != nullptr;
   result.success = prediction != nullptr && prediction->success;
@@ -54,6 +68,8 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
 struct MotionSums {
   double jitterSum = 0.0;
   int jitterFrames = 0;
+  double nmjSum = 0.0;  // over the frames with a jitter and a face box
+  int nmjFrames = 0;
   double alongMotion = 0.0;  // sum of (p_t - g_t) . (g_t - g_t-1)
   double motionSquared = 0.0;
 };
@@ -94,6 +110,14 @@ void measureMotion(const TrackTable& truth,
     frame.jitter = sum / count;
     sums.jitterSum += frame.jitter;
     ++sums.jitterFrames;
+    // The same change of the error over the face box instead of the eye distance. A truth whose
+    // points span no box (fewer than two points, all in a line) gives NMJ no frame: NaN there
+    // would poison the mean, so such frames count for jitter only.
+    if (frame.faceSize > 1e-9) {
+      frame.nmj = frame.jitter * frame.interOcular / frame.faceSize;
+      sums.nmjSum += frame.nmj;
+      ++sums.nmjFrames;
+    }
   }
 }
 
@@ -279,6 +303,7 @@ SequenceEvaluation evaluateSequences(const std::vector<TrackPair>& pairs, const 
     result.summary.jitterFrames = motion.jitterFrames;
     result.summary.jitter = motion.jitterSum / motion.jitterFrames;
   }
+  if (motion.nmjFrames > 0) result.summary.nmj = motion.nmjSum / motion.nmjFrames;
   if (motion.motionSquared > 1e-12) {
     result.summary.lagFrames = -motion.alongMotion / motion.motionSquared;
   }

@@ -53,6 +53,12 @@ struct FrameError {
   // over points of |(p_t - p_t-1) - (g_t - g_t-1)| / interOcular. NaN unless the truth has the
   // previous frame (frame - 1) and the prediction succeeded in both.
   double jitter = std::numeric_limits<double>::quiet_NaN();
+  // NMJ, the normalised mean jitter of video face-alignment papers: the same frame-to-frame change
+  // of the error, |(p_t - g_t) - (p_t-1 - g_t-1)|, averaged over the points but divided by the
+  // truth's face size in frame t, sqrt(width x height) of the box around its points, which does
+  // not shrink with yaw as the eye distance does (docs/evaluation.md). NaN when jitter is.
+  double nmj = std::numeric_limits<double>::quiet_NaN();
+  double faceSize = 0.0;  // sqrt of the area of the truth's point box, pixels; 0 if degenerate
 };
 
 struct RegionError {
@@ -89,6 +95,8 @@ struct ErrorSummary {
   // Mean of the frames' jitter (NaN when no frame has one) and how many frames had one.
   double jitter = std::numeric_limits<double>::quiet_NaN();
   int jitterFrames = 0;
+  // Mean of the frames' NMJ over the same frame pairs (NaN when none), pooled like jitter.
+  double nmj = std::numeric_limits<double>::quiet_NaN();
   // How many frames the prediction trails the truth by: the least-squares L in
   // p_t - g_t = -L (g_t - g_t-1) over the points of the frames with a jitter; 0 for a prediction
   // without lag, about 1 for one a frame late, NaN when the truth does not move.
@@ -132,7 +140,7 @@ SequenceEvaluation evaluateSequences(const std::vector<TrackPair>& pairs, const 
                                      const EvalOptions& options = {});
 
 // The summary of any subset of an evaluation's frames (e.g. a bucket): every figure but the
-// motion ones (jitter and lag stay NaN, extraPredictionRows 0).
+// motion ones (jitter, NMJ and lag stay NaN, extraPredictionRows 0).
 ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme& scheme,
                              const EvalOptions& options = {});
 

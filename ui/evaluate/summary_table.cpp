@@ -40,7 +40,7 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
   table.setColumnCount(kSummaryColumnCount);
   table.setHorizontalHeaderLabels({"Prediction", "Mean", "Median", "SD",
                                    "Within " + QString::number(report.options.threshold, 'f', 2),
-                                   "Convergence", "Frames scored", "Jitter", "Lag (frames)"});
+                                   "Convergence", "Frames scored", "Jitter", "NMJ", "Lag (frames)"});
   table.setRowCount(static_cast<int>(report.sequences.size()));
   for (int row = 0; row < table.rowCount(); ++row) {
     const auto& sequence = report.sequences[static_cast<std::size_t>(row)];
@@ -60,6 +60,11 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
                                    "motion, per eye distance, over %1 frame pairs")
                            .arg(s.jitterFrames));
     table.setItem(row, kJitterColumn, jitter);
+    auto* nmj = cell(formatError(s.nmj), true);
+    nmj->setToolTip(QObject::tr("Normalised mean jitter: the frame-to-frame change of the error, "
+                                "per face size (the square root of the area of the box around "
+                                "the truth's points)"));
+    table.setItem(row, kNmjColumn, nmj);
     table.setItem(row, kLagColumn, cell(QString::fromStdString(formatFrames(s.lagFrames)), true));
   }
   table.horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -69,14 +74,14 @@ void fillSummaryTable(QTableWidget& table, const EvaluationReport& report) {
 std::string formatSummaryCsv(const EvaluationReport& report) {
   std::string out =
       "prediction,file,mean,median,sd,within_threshold,convergence_rate,scored_frames,"
-      "normalised_frames,threshold,jitter,lag_frames\n";
+      "normalised_frames,threshold,jitter,lag_frames,nmj\n";
   for (const auto& sequence : report.sequences) {
     const auto& s = sequence.summary;
     out += csvText(sequence.label) + ',' + csvText(sequence.source) + ',' + csvNumber(s.mean) +
            ',' + csvNumber(s.median) + ',' + csvNumber(s.sd) + ',' + csvNumber(s.withinThreshold) +
            ',' + csvNumber(s.convergenceRate) + ',' + std::to_string(s.scoredFrames) + ',' +
            std::to_string(s.normalisedFrames) + ',' + csvNumber(report.options.threshold) + ',' +
-           csvNumber(s.jitter) + ',' + csvNumber(s.lagFrames) + '\n';
+           csvNumber(s.jitter) + ',' + csvNumber(s.lagFrames) + ',' + csvNumber(s.nmj) + '\n';
   }
   return out;
 }

@@ -1,6 +1,6 @@
 // The evaluate page's summary table: one row per prediction with the figures `clm3d eval` prints
 // (mean, median and SD of the frame errors, points within the threshold, convergence rate, frames
-// scored, jitter and lag), and the same table as CSV for spreadsheets and pandas.
+// scored, jitter, NMJ and lag), and the same table as CSV for spreadsheets and pandas.
 #pragma once
 
 #include <filesystem>
@@ -22,6 +22,7 @@ enum SummaryColumn {
   kConvergenceColumn,
   kFramesColumn,
   kJitterColumn,  // frame-to-frame motion not explained by the truth's, per eye distance
+  kNmjColumn,     // the same per face size (NMJ, docs/evaluation.md)
   kLagColumn,     // frames the prediction trails the truth by
   kSummaryColumnCount
 };
@@ -30,7 +31,8 @@ enum SummaryColumn {
 void fillSummaryTable(QTableWidget& table, const EvaluationReport& report);
 
 // prediction,file,mean,median,sd,within_threshold,convergence_rate,scored_frames,
-// normalised_frames,threshold,jitter,lag_frames: shares as fractions, numbers in full precision
+// normalised_frames,threshold,jitter,lag_frames,nmj (nmj last, so that readers of the columns
+// before it by position still read them): shares as fractions, numbers in full precision
 // (shortest exact form), empty when not defined; names quoted when they need it.
 std::string formatSummaryCsv(const EvaluationReport& report);
 // Written atomically; InputError naming the file if it cannot be.

@@ -234,7 +234,7 @@ class EvaluatePageTest : public QObject {
     const auto text = readTextFile(csv);
     const auto core = coreReport(files.truth, {files.close, files.far});
     QVERIFY(text.rfind("prediction,file,mean,median,sd,within_threshold,convergence_rate,"
-                       "scored_frames,normalised_frames,threshold,jitter,lag_frames\n",
+                       "scored_frames,normalised_frames,threshold,jitter,lag_frames,nmj\n",
                        0) == 0);
     QCOMPARE(std::count(text.begin(), text.end(), '\n'), 3L);
     const auto secondRow = text.substr(text.find("\nsingle-view,") + 1);

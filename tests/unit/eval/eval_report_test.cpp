@@ -86,6 +86,9 @@ TEST(EvalReport, JsonHoldsSummariesFramesAndTheTest) {
   EXPECT_EQ(first["regions"][4]["name"], "jaw");
   EXPECT_EQ(first["cdf"].size(), 51u);
   EXPECT_EQ(first["per_frame"].size(), 20u);
+  EXPECT_GT(report.sequences[0].summary.nmj, 0.0);  // the noise changes from frame to frame
+  EXPECT_DOUBLE_EQ(first["motion"]["nmj"].get<double>(), report.sequences[0].summary.nmj);
+  EXPECT_DOUBLE_EQ(first["per_frame"][3]["nmj"].get<double>(), report.sequences[0].frames[3].nmj);
   EXPECT_EQ(json["comparison"]["test"], "welch_t");
   EXPECT_DOUBLE_EQ(json["comparison"]["p"].get<double>(), report.comparison.welch.p);
 }
@@ -114,6 +117,9 @@ TEST(EvalReport, TextSummaryNamesEveryPredictionAndTheTest) {
   EXPECT_NE(text.find("\npowell ("), std::string::npos) << text;
   EXPECT_NE(text.find("convergence rate 100.0%"), std::string::npos) << text;
   EXPECT_NE(text.find("left_eye "), std::string::npos);
+  EXPECT_NE(text.find(", NMJ " + formatErrorValue(report.sequences[0].summary.nmj) + ", lag "),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("one-way ANOVA on frame errors: F(2, 57)"), std::string::npos) << text;
 }
 

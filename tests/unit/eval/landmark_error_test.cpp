@@ -283,6 +283,38 @@ TEST(EvalJitter, AlternatingOffsetsAreJitter) {
   EXPECT_NEAR(evaluation.frames[3].jitter, 3.0 / test::kInterOcular, 1e-12);
 }
 
+// NMJ: the same change of the error per face size, sqrt(width x height) of the truth's point box.
+// The test faces span x 90..186 and y 100..180 (eye centres at y 100, the rest at 150..180) in
+// every frame: a box of 96 x 80 pixels. Each point shakes up and down by its own amplitude
+// 1 + 0.1 k pixels, so its error changes by 2 (1 + 0.1 k) between frames: 4.4 on average over
+// k = 0..24.
+TEST(EvalNmj, AShakingTrackHasTheAnalyticNmj) {
+  const auto truth = test::truthTable(9);  // moving 3 pixels a frame: not jitter
+  const auto shaking = test::shiftedTable(truth, [](int frame, int point) {
+    const double amplitude = 1.0 + 0.1 * point;
+    return Eigen::Vector2d(0.0, frame % 2 == 0 ? amplitude : -amplitude);
+  });
+  const auto evaluation = evaluateSequence(truth, shaking, Scheme::thesis25());
+  const double faceSize = std::sqrt(96.0 * 80.0);
+  EXPECT_NEAR(evaluation.frames[4].faceSize, faceSize, 1e-12);
+  EXPECT_NEAR(evaluation.summary.nmj, 4.4 / faceSize, 1e-12);
+  EXPECT_NEAR(evaluation.frames[5].nmj, 4.4 / faceSize, 1e-12);
+  EXPECT_TRUE(std::isnan(evaluation.frames[0].nmj));  // no previous frame
+  // The eye distance's jitter is the same change over 60 pixels instead.
+  EXPECT_NEAR(evaluation.summary.jitter, 4.4 / test::kInterOcular, 1e-12);
+}
+
+TEST(EvalNmj, AnOffsetTrackAndFailedFramesHaveNone) {
+  auto truth = test::truthTable(6);
+  auto prediction = test::offsetTable(truth, 2.0, -1.0);  // a constant error does not jitter
+  prediction.rows[3].success = false;                     // frames 3 and 4 have no pair
+  const auto evaluation = evaluateSequence(truth, prediction, Scheme::thesis25());
+  EXPECT_NEAR(evaluation.summary.nmj, 0.0, 1e-12);
+  EXPECT_TRUE(std::isnan(evaluation.frames[3].nmj));
+  EXPECT_TRUE(std::isnan(evaluation.frames[4].nmj));
+  EXPECT_FALSE(std::isnan(evaluation.frames[5].nmj));
+}
+
 TEST(EvalJitter, APredictionAFrameLateHasALagOfOne) {
   const auto truth = test::truthTable(6);
   const auto late = test::shiftedTable(truth, [](int, int) { return Eigen::Vector2d(-3.0, 0.0); });
