@@ -7,10 +7,31 @@
 
 namespace clm3d::cli {
 
-CliProgress::CliProgress(Style style, bool quiet, std::ostream& out)
-    : style_(style), quiet_(quiet), out_(out) {}
+CliProgress::CliProgress(Style style, bool quiet, std::ostream& out, std::string name)
+    : style_(style), quiet_(quiet), out_(out), name_(std::move(name)) {
+  if (style_ == Style::Tenths) {
+    tenths_ = std::make_unique<DecileProgress>(
+        [this](int percent, std::string_view stage) { printTenth(percent, stage); });
+  }
+}
 
 CliProgress::CliProgress(Style style, bool quiet) : CliProgress(style, quiet, std::cerr) {}
+
+CliProgress::CliProgress(Style style, bool quiet, std::string name)
+    : CliProgress(style, quiet, std::cerr, std::move(name)) {}
+
+void CliProgress::printTenth(int percent, std::string_view stage) {
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  std::ostringstream line;
+  line << name_ << ": " << std::setw(3) << percent << "% " << stage << ", " << std::fixed
+       << std::setprecision(1) << seconds << " s";
+  if (percent > 0 && percent < 100) {
+    const double fraction = percent / 100.0;
+    line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
+  }
+  out_ << line.str() << '\n' << std::flush;
+}
 
 CliProgress::~CliProgress() {
   finish();
@@ -23,6 +44,10 @@ void CliProgress::setDetail(std::function<std::string()> detail) {
 
 void CliProgress::operator()(double fraction, std::string_view stage) {
   if (quiet_) return;
+  if (tenths_) {
+    (*tenths_)(fraction, stage);  // reports one at a time, under its own lock
+    return;
+  }
   std::lock_guard lock(mutex_);
   if (style_ == Style::Lines) {
     out_ << stage << '\n' << std::flush;

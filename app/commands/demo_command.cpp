@@ -13,9 +13,9 @@
 #include <optional>
 #include <string>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "core/common/data_paths.hpp"
-#include "core/common/decile_progress.hpp"
 #include "core/dataset/manifest_writer.hpp"
 #include "core/demo/demo_pipeline.hpp"
 #include "core/eval/eval_plots.hpp"
@@ -47,16 +47,6 @@ struct DemoArgs {
 
 // The model's name in the project's models folder.
 constexpr const char* kModelName = "demo";
-
-// Progress lines on stderr at every tenth, safe to call from the workers.
-DecileProgress stderrProgress(const std::string& what) {
-  return DecileProgress(
-      [what](int percent, std::string_view stage) {
-        std::cerr << "demo: " << what << (stage.empty() ? "" : " ") << stage << " " << percent
-                  << "%\n";
-      },
-      true);
-}
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -96,7 +86,7 @@ RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
   TrainSettings settings;
   settings.threads = args.threads;
   const auto trainStart = std::chrono::steady_clock::now();
-  DecileProgress progress = stderrProgress("real-face training");
+  CliProgress progress(CliProgress::Style::Tenths, false, "demo: real-face training");
   const ClmModel model =
       trainFromManifest(args.realManifest, settings, CLM3D_VERSION, progress.callback());
   fs::create_directories(real.model.parent_path());
@@ -112,7 +102,7 @@ RealDemo runRealDemo(const DemoArgs& args, RealDemo real) {
   real.tracks = project_layout::tracksFile(args.out, real.video, real.model);
   fs::create_directories(real.tracks.parent_path());
   TrackTable tracks;
-  DecileProgress trackProgress = stderrProgress("franck.mp4");
+  CliProgress trackProgress(CliProgress::Style::Tenths, false, "demo: franck.mp4");
   const TrackSummary tracked =
       trackVideo(real.video, model, tracking, tracks, {}, trackProgress.callback());
   writeTrackTable(real.tracks, tracks);
@@ -141,7 +131,7 @@ void runDemo(const DemoArgs& args) {
   // Every head from each of the model's training views, the contact sheet of them, and what the
   // renders show about hidden points.
   const auto renderStart = std::chrono::steady_clock::now();
-  DecileProgress renderProgress = stderrProgress("rendered views");
+  CliProgress renderProgress(CliProgress::Style::Tenths, false, "demo: rendered views");
   const DemoRenders renders =
       renderDemoViews(made.heads, args.size, args.threads, rendersDir, renderProgress.callback());
   const double renderSeconds = secondsSince(renderStart);
@@ -161,8 +151,8 @@ void runDemo(const DemoArgs& args) {
   const fs::path reportDir = args.out / "report";
   const TrainSettings settings = demoTrainSettings(args.samples, args.threads);
   const auto trainStart = std::chrono::steady_clock::now();
-  // trainModel reports from its worker threads: DecileProgress keeps its counter under a lock.
-  DecileProgress trainProgress = stderrProgress("training");
+  // trainModel reports from its worker threads: CliProgress reports one at a time.
+  CliProgress trainProgress(CliProgress::Style::Tenths, false, "demo: training");
   const ClmModel model =
       trainDemoModel(made.heads, settings, CLM3D_VERSION, trainProgress.callback());
   fs::create_directories(modelPath.parent_path());

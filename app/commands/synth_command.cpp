@@ -18,10 +18,10 @@
 #include <string>
 #include <utility>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt_scope.hpp"
 #include "app/commands/scan_options.hpp"
-#include "core/common/decile_progress.hpp"
 #include "core/common/error.hpp"
 #include "core/dataset/training_subjects.hpp"
 #include "core/eval/photo_sequence.hpp"
@@ -212,21 +212,8 @@ SequenceSettings toSettings(const SynthArgs& args) {
   return settings;
 }
 
-// Progress lines on stderr at every 10%, for sequences of 30 frames or more, with the time so
-// far and an estimate of what is left.
-DecileProgress stderrProgress(int frames, std::chrono::steady_clock::time_point start) {
-  return DecileProgress([show = frames >= 30, start](int percent, std::string_view stage) {
-    if (!show) return;
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double fraction = percent / 100.0;
-    std::ostringstream line;
-    line << "synth: " << std::setw(3) << percent << "% " << stage << ", " << std::fixed
-         << std::setprecision(1) << seconds << " s";
-    if (percent < 100) line << ", ~" << seconds * (1 - fraction) / fraction << " s left";
-    std::cerr << line.str() << '\n';
-  });
-}
+// Progress lines on stderr at every 10% (CliProgress), for sequences of 30 frames or more.
+constexpr int kProgressFrames = 30;
 
 // --photo: the photo moving in the image plane, its landmarks moved with it.
 void runPhotoSynth(const SynthArgs& args) {
@@ -263,7 +250,7 @@ void runPhotoSynth(const SynthArgs& args) {
 
   const auto start = std::chrono::steady_clock::now();
   InterruptScope interrupt;
-  DecileProgress progress = stderrProgress(settings.frames, start);
+  CliProgress progress(CliProgress::Style::Tenths, settings.frames < kProgressFrames, "synth");
   const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
   PhotoSequenceSummary summary;
   try {
@@ -323,7 +310,7 @@ void runSynth(const SynthArgs& args) {
   const double loadSeconds = elapsed();
 
   InterruptScope interrupt;
-  DecileProgress progress = stderrProgress(frames, std::chrono::steady_clock::now());
+  CliProgress progress(CliProgress::Style::Tenths, frames < kProgressFrames, "synth");
   const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
   SequenceSummary summary;
   try {

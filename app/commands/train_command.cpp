@@ -7,9 +7,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <mutex>
-#include <sstream>
 
+#include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt_scope.hpp"
 #include "app/commands/option_cli.hpp"
@@ -51,26 +50,11 @@ void printSummary(const ClmModel& model, const fs::path& out, double seconds) {
 void runTrain(TrainArgs& args) {
   InterruptScope interrupt;
   const auto start = std::chrono::steady_clock::now();
-  std::mutex printMutex;
-  int lastDecile = -1;
-  const auto progress = [&](double fraction, std::string_view stage) {
-    const int decile = static_cast<int>(fraction * 10.0 + 1e-9);
-    std::lock_guard lock(printMutex);
-    if (decile <= lastDecile) return;
-    lastDecile = decile;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::ostringstream line;
-    line << "train: " << std::setw(3) << decile * 10 << "% " << stage << ", " << std::fixed
-         << std::setprecision(1) << elapsed << " s";
-    if (fraction > 0.05 && fraction < 1.0)
-      line << ", ~" << elapsed * (1 - fraction) / fraction << " s left";
-    std::cerr << line.str() << '\n';
-  };
+  CliProgress progress(CliProgress::Style::Tenths, false, "train");
   try {
     std::vector<PhotoPlacement> placements;
     ClmModel model = trainFromManifest(args.dataset, args.settings, std::string(CLM3D_VERSION),
-                                       progress, &interrupt.token(), &placements);
+                                       progress.callback(), &interrupt.token(), &placements);
     if (!placements.empty()) {
       int used = 0;
       int copies = 0;
