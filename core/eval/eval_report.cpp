@@ -347,8 +347,7 @@ std::string formatReportText(const EvaluationReport& report) {
     out += ", all " + formatErrorValue(s.meanPointError) + "\n";
     out += "  motion: jitter " + formatErrorValue(s.jitter) + " over " +
            std::to_string(s.jitterFrames) + " frame pairs, NMJ " + formatErrorValue(s.nmj) +
-           ", lag " + formatFrames(s.lagFrames) +
-           " frames\n";
+           ", lag " + formatFrames(s.lagFrames) + " frames\n";
   }
   const std::string comparison = formatComparison(report);
   if (!comparison.empty()) out += "\n" + comparison + "\n";

@@ -75,8 +75,8 @@ EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& tr
 // "nmj", "lag_frames"}, "regions": [...], "cdf": [...], "per_frame": [{"frame", "error",
 // "success", "converged", "jitter", "nmj", "sequence"}]}], "comparison": {...} or null,
 // "truths": [...], and with buckets "buckets": {"column", "absolute", "edges", "predictions":
-// [{"label", "outside", "buckets": [{"low", "high", "frames", "scored", "mean", "median", "convergence_rate",
-// "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too. NaN is null.
+// [{"label", "outside", "buckets": [{"low", "high", "frames", "scored", "mean", "median",
+// "convergence_rate", "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too. NaN is null.
 std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
