@@ -114,6 +114,10 @@ void runLocal(const BatchArgs& args) {
   interrupt.release();
   for (const BatchRow& row : summary.rows) {
     if (row.status == ImageFitStatus::Error) std::cerr << "error: " << row.error << '\n';
+    // A video tracked with unreadable frames (unreadableFramesWarning).
+    if (row.status == ImageFitStatus::Ok && !row.error.empty()) {
+      std::cerr << "warning: " << row.error << '\n';
+    }
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

@@ -89,6 +89,11 @@ void runTrack(const TrackArgs& args) {
   interrupt.release();
   progress.finish();
   if (overlay) overlay->close();
+  // The rows were streamed before the missing frames were known: mark them now.
+  markUnreadableFrames(args.out, summary.unreadable);
+  if (const std::string warning = unreadableFramesWarning(args.video, summary); !warning.empty()) {
+    std::cerr << "warning: " << warning << '\n';
+  }
   if (cancelled) {
     throw InputError("cancelled after " + std::to_string(written) + " frames; those are in " +
                      args.out.string());
@@ -104,8 +109,12 @@ void runTrack(const TrackArgs& args) {
             << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
             << resolveOptimiser(settings.fit.optimiser, model) << ", "
             << (settings.fit.scales > 0 ? std::to_string(settings.fit.scales) : std::string("all"))
-            << " scales)\n"
-            << "tracks: " << args.out.string() << '\n';
+            << " scales)\n";
+  if (!summary.unreadable.empty()) {
+    std::cout << "skipped " << summary.unreadableFrames()
+              << " unreadable frames: " << formatFrameSpans(summary.unreadable) << '\n';
+  }
+  std::cout << "tracks: " << args.out.string() << '\n';
   if (overlay) std::cout << "overlay: " << args.overlay.string() << '\n';
 }
 

@@ -205,12 +205,15 @@ BatchRow runVideo(const ClmModel& model, const TrackerSettings& settings, const 
       summary = trackVideo(
           input, model, settings, [&writer](TrackRow&& row) { writer.write(row); }, {}, {}, cancel);
     });
+    markUnreadableFrames(output, summary.unreadable);  // known only once the video was read
     BatchRow row;
     row.item = input.string();
     row.status = ImageFitStatus::Ok;
     row.frames = summary.frames;
     row.failures = summary.frames - summary.succeeded;
     row.seconds = secondsSince(begin);
+    // Tracked, but with frames the video declares and could not give: said in the error cell.
+    row.error = unreadableFramesWarning(input, summary);
     return row;
   } catch (const InputError& e) {
     return errorRow(input, e.what(), secondsSince(begin));

@@ -22,6 +22,8 @@ namespace {
 
 constexpr const char* kVisiblePrefix = "visible_";
 constexpr const char* kConfidencePrefix = "conf_";
+constexpr const char* kStatusColumn = "status";
+constexpr const char* kUnreadable = "unreadable";
 constexpr std::array<const char*, 7> kPoseColumns = {"tx",    "ty",  "tz",  "scale",
                                                      "pitch", "yaw", "roll"};
 
@@ -113,7 +115,7 @@ bool needsQuoting(std::string_view text) {
 
 bool isTrackerColumn(const std::string& name, int landmarkCount) {
   if (name == "frame" || name == "timestamp" || name == "success" || name == "confidence" ||
-      name == "view") {
+      name == "view" || name == kStatusColumn) {
     return true;
   }
   for (const char* pose : kPoseColumns) {
@@ -160,9 +162,10 @@ void checkExtraCell(const std::string& cell, const std::string& column, int fram
   }
 }
 
-// The header line: the tracker's columns, visible_k / conf_k when asked for, the extra columns.
+// The header line: the tracker's columns, visible_k / conf_k / status when asked for, the extra
+// columns.
 void appendTrackHeader(std::string& out, int n, bool withVisibility, bool withConfidence,
-                       const std::vector<std::string>& extraColumns) {
+                       bool withStatus, const std::vector<std::string>& extraColumns) {
   out += "frame,timestamp,success,confidence,view";
   for (const char* name : kPoseColumns) out += std::string(",") + name;
   for (int i = 1; i <= n; ++i) out += ",x_" + std::to_string(i);
@@ -173,13 +176,15 @@ void appendTrackHeader(std::string& out, int n, bool withVisibility, bool withCo
   if (withConfidence) {
     for (int i = 1; i <= n; ++i) out += "," + std::string(kConfidencePrefix) + std::to_string(i);
   }
+  if (withStatus) out += std::string(",") + kStatusColumn;
   for (const auto& name : extraColumns) out += ',' + name;
   out += '\n';
 }
 
 // One row's line under such a header; Error for a row of the wrong size.
 void appendTrackRow(std::string& out, const TrackRow& row, int n, bool withVisibility,
-                    bool withConfidence, const std::vector<std::string>& extraColumns) {
+                    bool withConfidence, bool withStatus,
+                    const std::vector<std::string>& extraColumns) {
   if (row.points.cols() != n) {
     throw Error("track table: frame " + std::to_string(row.frame) + " has " +
                 std::to_string(row.points.cols()) + " points, expected " + std::to_string(n));
@@ -238,6 +243,10 @@ void appendTrackRow(std::string& out, const TrackRow& row, int n, bool withVisib
       }
     }
   }
+  if (withStatus) {
+    out += ',';
+    if (row.unreadable) out += kUnreadable;
+  }
   if (row.extraCells.size() > extraColumns.size()) {
     throw Error("track table: frame " + std::to_string(row.frame) + " has " +
                 std::to_string(row.extraCells.size()) + " extra cells, expected at most " +
@@ -264,11 +273,13 @@ std::string formatTrackTable(const TrackTable& table) {
   const bool withConfidence =
       std::any_of(table.rows.begin(), table.rows.end(),
                   [](const TrackRow& row) { return !row.landmarkConfidence.empty(); });
+  const bool withStatus = std::any_of(table.rows.begin(), table.rows.end(),
+                                      [](const TrackRow& row) { return row.unreadable; });
   checkExtraColumns(table);
   std::string out;
-  appendTrackHeader(out, n, withVisibility, withConfidence, table.extraColumns);
+  appendTrackHeader(out, n, withVisibility, withConfidence, withStatus, table.extraColumns);
   for (const auto& row : table.rows) {
-    appendTrackRow(out, row, n, withVisibility, withConfidence, table.extraColumns);
+    appendTrackRow(out, row, n, withVisibility, withConfidence, withStatus, table.extraColumns);
   }
   return out;
 }
@@ -277,19 +288,31 @@ TrackTableWriter::TrackTableWriter(std::ostream& out, int landmarkCount)
     : out_(&out), landmarkCount_(landmarkCount) {
   if (landmarkCount < 0) throw Error("track table: negative landmark count");
   std::string header;
-  appendTrackHeader(header, landmarkCount_, true, true, {});
+  appendTrackHeader(header, landmarkCount_, true, true, false, {});
   out_->write(header.data(), static_cast<std::streamsize>(header.size()));
 }
 
 void TrackTableWriter::write(const TrackRow& row) {
   line_.clear();
-  appendTrackRow(line_, row, landmarkCount_, true, true, {});
+  appendTrackRow(line_, row, landmarkCount_, true, true, false, {});
   out_->write(line_.data(), static_cast<std::streamsize>(line_.size()));
   ++rows_;
 }
 
 void writeTrackTable(const std::filesystem::path& path, const TrackTable& table) {
   writeTextAtomically(path, formatTrackTable(table));
+}
+
+void markUnreadableFrames(const std::filesystem::path& path, const std::vector<FrameSpan>& spans) {
+  if (spans.empty()) return;
+  TrackTable table = readTrackTable(path);
+  const auto inSpan = [&](int frame) {
+    return std::any_of(spans.begin(), spans.end(), [frame](const FrameSpan& span) {
+      return frame >= span.first && frame - span.first < span.count;
+    });
+  };
+  for (TrackRow& row : table.rows) row.unreadable = row.unreadable || inSpan(row.frame);
+  writeTrackTable(path, table);
 }
 
 TrackTable parseTrackTable(const std::string& input, const std::string& sourceName) {
@@ -332,6 +355,7 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
   const int timestampColumn = find("timestamp");
   const int confidenceColumn = find("confidence");
   const int viewColumn = find("view");
+  const int statusColumn = find(kStatusColumn);
   // Pose columns: all seven or none.
   std::array<int, 7> poseColumns{};
   int poseFound = 0;
@@ -423,6 +447,13 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
                                            : std::numeric_limits<double>::quiet_NaN();
     row.view =
         viewColumn >= 0 && !reader.cell(viewColumn).empty() ? reader.integer(viewColumn, -1) : -1;
+    if (statusColumn >= 0) {
+      const auto status = reader.cell(statusColumn);
+      if (!status.empty() && status != kUnreadable) {
+        reader.fail(statusColumn, "\"" + std::string(status) + "\" is not empty or " + kUnreadable);
+      }
+      row.unreadable = !status.empty();
+    }
 
     if (hasPose) {
       std::array<double, 7> values{};

@@ -39,6 +39,10 @@ struct TrackRow {
   std::vector<double> landmarkConfidence{};
   // One text cell per TrackTable::extraColumns entry (fewer: the rest are empty).
   std::vector<std::string> extraCells{};
+  // The video declares this frame but it could not be decoded: no image was tracked (success 0,
+  // no pose, no points). Written as "unreadable" in the status column, which a table has only
+  // when some row is unreadable (docs/tracks-csv.md).
+  bool unreadable = false;
 };
 
 struct TrackTable {
@@ -52,7 +56,8 @@ struct TrackTable {
 // Columns, in order: frame, timestamp, success (0/1), confidence, view, tx, ty, tz, scale,
 // pitch, yaw, roll (degrees), x_1..x_n, y_1..y_n, visible_1..visible_n (1, 0, or empty for
 // unknown; only when some row has a visibility), conf_1..conf_n (only when some row has
-// landmark confidences), then the extra columns. Missing values are empty cells. Written
+// landmark confidences), status ("unreadable" or empty; only when some row is unreadable), then
+// the extra columns. Missing values are empty cells. Written
 // atomically (temporary file, then rename). Throws Error if a row's point count is not
 // landmarkCount, a row's visibility or landmark confidences are neither empty nor landmarkCount
 // long, a row has more
@@ -66,9 +71,23 @@ std::string formatTrackTable(const TrackTable& table);
 // every row's has n entries; the same for conf_k and landmarkConfidence). Throws InputError naming
 // the file, the line and the column for a missing column, a malformed number or a wrong cell count.
 // Columns the table does not use come back as extraColumns (header order, named ones only) with
-// their cells.
+// their cells. A status cell other than empty or "unreadable" is an InputError.
 TrackTable readTrackTable(const std::filesystem::path& path);
 TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
+
+// Frames first .. first + count - 1.
+struct FrameSpan {
+  int first = 0;
+  int count = 0;
+  bool operator==(const FrameSpan&) const = default;
+};
+
+// Marks the rows of the frames in `spans` unreadable in the table written at `path` (by
+// writeTrackTable or a TrackTableWriter), adding the status column: how `clm3d track` and `clm3d
+// batch`, which stream their rows before they know whether a frame will be missing, mark the frames
+// a damaged video lacked. Reads the whole table (only damaged videos pay for it); written
+// atomically. InputError naming the file if it cannot be read or written.
+void markUnreadableFrames(const std::filesystem::path& path, const std::vector<FrameSpan>& spans);
 
 // The numeric columns a row can be looked up by: frame, timestamp, success, confidence, view, the
 // pose's tx, ty, tz, scale, pitch, yaw, roll (degrees, as written), then the extra columns.

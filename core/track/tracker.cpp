@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/refine/refined_fit.hpp"
+#include "core/video/frame_prefetcher.hpp"
 #include "core/video/video_reader.hpp"
 
 namespace clm3d {
@@ -185,8 +187,12 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
 
 FitState Tracker::carriedState(const FitResult& fit) const {
   if (std::isnan(fit.searchConfidence)) return fit.state;  // unchecked: the search's own state
+  // The search's state is near already: a few Levenberg-Marquardt steps, not the 60 a start from
+  // nothing is allowed (each is a Jacobian and a small solve, a few hundredths of a millisecond).
+  PointsFitSettings nearby;
+  nearby.maxIterations = 10;
   try {
-    return stateNearPoints(*model_, camera_, fit.points, fit.modelled, fit.state);
+    return stateNearPoints(*model_, camera_, fit.points, fit.modelled, fit.state, nearby);
   } catch (const InputError&) {
     return fit.state;  // too few modelled points to place the model: keep the search's state
   }
@@ -310,25 +316,95 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
       stage, perFrame, progress, cancel);
 }
 
+int TrackSummary::unreadableFrames() const {
+  int count = 0;
+  for (const FrameSpan& span : unreadable) count += span.count;
+  return count;
+}
+
+std::string formatFrameSpans(const std::vector<FrameSpan>& spans, std::size_t shown) {
+  std::string text;
+  int rest = 0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const FrameSpan& span = spans[k];
+    if (k >= shown) {
+      rest += span.count;
+      continue;
+    }
+    text += (k == 0 ? "" : ", ") + std::to_string(span.first);
+    if (span.count > 1) text += "-" + std::to_string(span.first + span.count - 1);
+  }
+  if (rest > 0) text += " and " + std::to_string(rest) + " more frames";
+  return text;
+}
+
+std::string unreadableFramesWarning(const std::filesystem::path& video,
+                                    const TrackSummary& summary) {
+  const int missing = summary.unreadableFrames();
+  if (missing == 0) return {};
+  std::string what;
+  if (summary.declaredFrames > 0) {
+    what = "the container declares " + std::to_string(summary.declaredFrames) + " frames but " +
+           std::to_string(summary.declaredFrames - missing) + " could be decoded; ";
+  }
+  what += (missing == 1 ? "frame " : "frames ") + formatFrameSpans(summary.unreadable) +
+          (missing == 1 ? " is" : " are") +
+          " unreadable (no image: marked unreadable in the tracks)";
+  return fileMessage(video, what);
+}
+
+namespace {
+
+// The row of a frame the video declares but could not be decoded: nothing tracked.
+TrackRow unreadableRow(int frame, double fps, int points) {
+  TrackRow row;
+  row.frame = frame;
+  row.timestamp = frame / fps;
+  row.confidence = std::numeric_limits<double>::quiet_NaN();
+  row.points = Eigen::Matrix2Xd::Constant(2, points, std::numeric_limits<double>::quiet_NaN());
+  row.unreadable = true;
+  return row;
+}
+
+}  // namespace
+
 TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
                                   int expectedFrames, std::string_view stage,
                                   const PerFrame& perFrame, const ProgressCallback& progress,
                                   const CancelToken* cancel) {
   TrackSummary summary;
-  cv::Mat frame;
-  while (true) {
-    if (cancel != nullptr) cancel->throwIfCancelled();
-    if (!reader.read(frame)) break;
-    TrackStep step = tracker.track(frame, reader.frameIndex(), reader.timestamp());
-    ++summary.frames;
-    if (step.row.success) ++summary.succeeded;
-    if (step.detected) ++summary.detections;
-    if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
-    if (perFrame) perFrame(frame, step, tracker);
-    onRow(std::move(step.row));
-    if (progress && expectedFrames > 0) {
-      progress(std::min(1.0, static_cast<double>(summary.frames) / expectedFrames), stage);
+  summary.declaredFrames = reader.frameCount();
+  const int points = tracker.fitter().model().shape.pointCount();
+  const double fps = reader.fps();  // read here: the decoder thread owns the reader below
+  const auto skip = [&](int first, int count) {
+    summary.unreadable.push_back({first, count});
+    for (int f = first; f < first + count; ++f) onRow(unreadableRow(f, fps, points));
+  };
+  int last = reader.frameIndex();  // the last frame decoded (or before the first one left)
+  {
+    // Decoded on a thread of its own while the frames before are fitted; destroyed (the thread
+    // stopped) before the reader is looked at again, also when Cancelled or a decode error leaves.
+    FramePrefetcher frames(reader);
+    while (true) {
+      if (cancel != nullptr) cancel->throwIfCancelled();
+      const DecodedFrame* frame = frames.next();
+      if (frame == nullptr) break;
+      if (frame->skippedBefore > 0) skip(frame->index - frame->skippedBefore, frame->skippedBefore);
+      last = frame->index;
+      TrackStep step = tracker.track(frame->image, frame->index, frame->timestamp);
+      ++summary.frames;
+      if (step.row.success) ++summary.succeeded;
+      if (step.detected) ++summary.detections;
+      if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
+      if (perFrame) perFrame(frame->image, step, tracker);
+      onRow(std::move(step.row));
+      if (progress && expectedFrames > 0) {
+        progress(std::min(1.0, static_cast<double>(summary.frames) / expectedFrames), stage);
+      }
     }
+  }
+  if (summary.declaredFrames - (last + 1) >= kUnreadableTailMinimum) {
+    skip(last + 1, summary.declaredFrames - (last + 1));
   }
   if (progress) progress(1.0, stage);
   return summary;

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -195,17 +196,39 @@ class Tracker {
 };
 
 struct TrackSummary {
-  int frames = 0;
+  int frames = 0;  // frames decoded and tracked
   int succeeded = 0;
   int detections = 0;
   std::vector<double> fitMilliseconds;  // per fitted frame
   double medianMilliseconds() const;
   double percentileMilliseconds(double share) const;
+  // Frames the video declares but that could not be decoded, in frame order: gaps in the middle
+  // (VideoReader::skippedBefore) and, when at least kUnreadableTailMinimum frames are missing
+  // there, the declared frames after the last decoded one (a truncated file). Each has a row
+  // marked unreadable (TrackRow::unreadable); nothing else about the other frames changes.
+  std::vector<FrameSpan> unreadable;
+  int declaredFrames = -1;  // VideoReader::frameCount(): -1 when the container states none
+  int unreadableFrames() const;
 };
 
+// A shortfall of one frame at the end is not reported: containers without a frame count
+// (Matroska, WebM, raw streams) give one estimated from the duration, which can be one off.
+inline constexpr int kUnreadableTailMinimum = 2;
+
+// "FILE: the container declares N frames but M could be decoded; frames A-B, C are unreadable
+// (no image: marked unreadable in the tracks)"; empty when the summary has no unreadable frame.
+// What `clm3d track`, `clm3d batch` and the studio warn with.
+std::string unreadableFramesWarning(const std::filesystem::path& video,
+                                    const TrackSummary& summary);
+// "A-B, C, ..." (at most `shown` spans, then "and N more frames").
+std::string formatFrameSpans(const std::vector<FrameSpan>& spans, std::size_t shown = 8);
+
 // Tracks every frame `reader` has left with `tracker`, appending the rows to `rows`: the loop
-// trackVideo and retrackFrom share. Progress `stage` goes 0..1 over `expectedFrames` (0 = unknown);
-// Cancelled when cancelled, the rows so far kept.
+// trackVideo and retrackFrom share. The frames are decoded on a thread of their own a few frames
+// ahead of the fit (core/video/frame_prefetcher), in order; a decode error is thrown here. Frames
+// the video declares but could not be decoded get unreadable rows (TrackSummary::unreadable), in
+// frame order among the others; perFrame does not see them. Progress `stage` goes 0..1 over
+// `expectedFrames` (0 = unknown); Cancelled when cancelled, the rows so far kept.
 using PerFrame = std::function<void(const cv::Mat&, const TrackStep&, Tracker&)>;
 TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
                                   std::vector<TrackRow>& rows, int expectedFrames,

@@ -16,18 +16,18 @@ namespace fs = std::filesystem;
 
 constexpr double kFallbackFps = 30.0;
 
-// Any decoded frame as 8-bit, 3-channel BGR.
-cv::Mat toBgr(const cv::Mat& frame, const fs::path& path) {
+// Any decoded frame as 8-bit, 3-channel BGR, into bgr (its buffer reused when it fits; frame and
+// bgr must not share one).
+void toBgr(const cv::Mat& frame, cv::Mat& bgr, const fs::path& path) {
   cv::Mat eight = frame;
   if (frame.depth() == CV_16U) {
     frame.convertTo(eight, CV_8U, 1.0 / 257.0);
   } else if (frame.depth() != CV_8U) {
     throwInputError(path, "has frames of an unsupported pixel type");
   }
-  cv::Mat bgr;
   switch (eight.channels()) {
     case 3:
-      bgr = eight;
+      eight.copyTo(bgr);
       break;
     case 1:
       cv::cvtColor(eight, bgr, cv::COLOR_GRAY2BGR);
@@ -38,7 +38,16 @@ cv::Mat toBgr(const cv::Mat& frame, const fs::path& path) {
     default:
       throwInputError(path, "has frames with " + std::to_string(eight.channels()) + " channels");
   }
-  return bgr;
+}
+
+// A presentation time gap of a whole number of frame intervals (within a quarter) beyond one:
+// that many frames less one were in the container but not decoded.
+int framesSkippedBetween(double before, double now, double fps) {
+  if (!std::isfinite(before)) return 0;
+  const double steps = (now - before) * fps;
+  const double whole = std::round(steps);
+  if (whole < 2.0 || std::abs(steps - whole) > 0.25 || whole > 1e6) return 0;
+  return static_cast<int>(whole) - 1;
 }
 
 }  // namespace
@@ -56,7 +65,13 @@ struct VideoReader::Impl {
   double pendingTime = 0.0;
   int index = -1;     // last frame handed out by read()
   double time = 0.0;  // its timestamp
+  int skipped = 0;    // undecodable frames just before it
   double lastDecodedTime = -std::numeric_limits<double>::infinity();
+  // The container's time of the last decoded frame when it was usable, else NaN: the reference
+  // for a gap (frames FFmpeg could not decode).
+  double lastStatedTime = std::numeric_limits<double>::quiet_NaN();
+  int lastSkipped = 0;  // what the last decode() skipped
+  cv::Mat raw;          // OpenCV's frame before conversion, kept so its buffer is reused
 
   void open() {
     capture.release();
@@ -74,24 +89,36 @@ struct VideoReader::Impl {
     next = 0;
     pending.release();
     lastDecodedTime = -std::numeric_limits<double>::infinity();
+    lastStatedTime = std::numeric_limits<double>::quiet_NaN();
   }
 
-  // Decodes frame `next`; false at the end.
+  // Decodes frame `next` (moved on past frames the container has but FFmpeg could not decode:
+  // lastSkipped) into bgr; false at the end.
   bool decode(cv::Mat& bgr, double& seconds) {
-    cv::Mat frame;
     bool ok = false;
     try {
-      ok = capture.read(frame);
+      ok = capture.read(raw);
     } catch (const cv::Exception& e) {
       throwInputError(path,
                       "frame " + std::to_string(next) + " cannot be decoded (" + e.what() + ")");
     }
-    if (!ok || frame.empty()) return false;
-    bgr = toBgr(frame, path);
-    if (bgr.data == frame.data) bgr = bgr.clone();  // OpenCV reuses its buffer between reads
+    if (!ok || raw.empty()) return false;
+    if (raw.type() == CV_8UC3) {
+      // Already BGR: hand the buffer over and decode the next frame into bgr's old one (a ring of
+      // buffers stays a ring, one buffer larger).
+      cv::swap(raw, bgr);
+    } else {
+      toBgr(raw, bgr, path);
+    }
     const double stated = capture.get(cv::CAP_PROP_POS_MSEC) / 1000.0;
     const bool sane = std::isfinite(stated) && stated >= 0.0 &&
                       (next == 0 ? stated < 1.0 / fps + 1e-6 : stated > lastDecodedTime);
+    lastSkipped = sane ? framesSkippedBetween(lastStatedTime, stated, fps) : 0;
+    // Never beyond the frames the container declares: a variable-rate video's longer intervals
+    // are not lost frames.
+    if (frameCount > 0 && next + lastSkipped >= frameCount) lastSkipped = 0;
+    next += lastSkipped;
+    lastStatedTime = sane ? stated : std::numeric_limits<double>::quiet_NaN();
     seconds = sane ? stated : next / fps;
     if (!(seconds > lastDecodedTime)) seconds = lastDecodedTime + 1.0 / fps;
     lastDecodedTime = seconds;
@@ -117,6 +144,7 @@ struct VideoReader::Impl {
       next = frame;
       pending.release();
       lastDecodedTime = -std::numeric_limits<double>::infinity();
+      lastStatedTime = std::numeric_limits<double>::quiet_NaN();
       return true;
     }
     // The container could not seek exactly: decode forward from the start.
@@ -160,23 +188,28 @@ VideoReader::VideoReader(VideoReader&&) noexcept = default;
 VideoReader& VideoReader::operator=(VideoReader&&) noexcept = default;
 
 bool VideoReader::read(cv::Mat& bgr) {
+  bgr = cv::Mat();  // a fresh buffer: never one the caller still holds
+  if (readInto(bgr)) return true;
+  bgr.release();
+  return false;
+}
+
+bool VideoReader::readInto(cv::Mat& bgr) {
   Impl& d = *impl_;
   if (!d.pending.empty()) {
-    bgr = d.pending;
+    bgr = d.pending;  // the caller's buffer from here on
     d.pending.release();
     d.index = d.next;
     d.time = d.pendingTime;
+    d.skipped = 0;
     ++d.next;
     return true;
   }
   double seconds = 0.0;
-  const int index = d.next;
-  if (!d.decode(bgr, seconds)) {
-    bgr.release();
-    return false;
-  }
-  d.index = index;
+  if (!d.decode(bgr, seconds)) return false;
+  d.index = d.next - 1;
   d.time = seconds;
+  d.skipped = d.lastSkipped;
   return true;
 }
 
@@ -187,6 +220,7 @@ bool VideoReader::seek(int frame) {
   const int previousNext = d.next;
   const int previousIndex = d.index;
   const double previousTime = d.time;
+  d.skipped = 0;
   if (d.position(frame)) {
     d.index = frame - 1;
     d.time = frame > 0 ? (frame - 1) / d.fps : 0.0;
@@ -200,6 +234,9 @@ bool VideoReader::seek(int frame) {
 
 int VideoReader::frameIndex() const {
   return impl_->index;
+}
+int VideoReader::skippedBefore() const {
+  return impl_->skipped;
 }
 double VideoReader::timestamp() const {
   return impl_->time;

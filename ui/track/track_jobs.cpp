@@ -1,5 +1,7 @@
 #include "ui/track/track_jobs.hpp"
 
+#include <algorithm>
+
 #include "core/common/error.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
@@ -11,9 +13,14 @@
 namespace clm3d::ui {
 namespace {
 
-// Keeps the fit state of each tracked frame, indexed by frame from `first`.
-auto recordFits(std::vector<std::optional<FrameFit>>& fits) {
-  return [&fits](const cv::Mat&, const TrackStep& step, Tracker&) {
+// Keeps the fit state of each tracked frame, indexed by frame from `first` (a frame the video
+// could not give, an unreadable row the tracker hands no image, has none); with first < 0 one per
+// call, in the order tracked (the correction loop's spans).
+auto recordFits(std::vector<std::optional<FrameFit>>& fits, int first = -1) {
+  return [&fits, first](const cv::Mat&, const TrackStep& step, Tracker&) {
+    if (first >= 0 && step.row.frame > first) {
+      fits.resize(std::max(fits.size(), static_cast<std::size_t>(step.row.frame - first)));
+    }
     if (step.fit) {
       fits.push_back(FrameFit{step.fit->state, step.fit->view});
     } else {
@@ -42,7 +49,9 @@ JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path model
     outcome->model = modelOrLoad(model, modelPath, progress);
     cancel.throwIfCancelled();
     outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
-                                  recordFits(outcome->fits), progress, &cancel);
+                                  recordFits(outcome->fits, 0), progress, &cancel);
+    outcome->fits.resize(outcome->table.rows.size());  // unreadable frames at the end
+    outcome->warning = unreadableFramesWarning(video, outcome->summary);
   };
 }
 
@@ -75,7 +84,8 @@ JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const Clm
     const FitState state = stateFromCorrected(video, *model, points);
     outcome->corrected = corrected;
     retrackFrom(video, *model, settings, corrected, state, -1, outcome->rows,
-                recordFits(outcome->fits), progress, &cancel);
+                recordFits(outcome->fits, corrected + 1), progress, &cancel);
+    outcome->fits.resize(outcome->rows.size());  // unreadable frames at the end
   };
 }
 

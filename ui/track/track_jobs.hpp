@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/review/track_session.hpp"
@@ -21,6 +22,7 @@ struct TrackOutcome {
   TrackTable table;
   std::vector<std::optional<FrameFit>> fits;  // per frame of table.rows
   TrackSummary summary;
+  std::string warning;  // unreadableFramesWarning: frames the video declares but could not give
 };
 
 // Tracks every frame of `video`; `model` may be null, then the job loads `modelPath`.
