@@ -496,10 +496,14 @@ void TrackPage::onJobEnded() {
     if (!trackOutcome_->table.rows.empty()) {
       session_.setTrack(std::move(trackOutcome_->table), std::move(trackOutcome_->fits));
       saveTracks();
-      emit statusMessage(tr("Tracked %1 of %2 frames (%3 succeeded).")
-                             .arg(session_.track().rows.size())
-                             .arg(session_.video().frameCount)
-                             .arg(trackOutcome_->summary.succeeded));
+      QString message = tr("Tracked %1 of %2 frames (%3 succeeded).")
+                            .arg(session_.track().rows.size())
+                            .arg(session_.video().frameCount)
+                            .arg(trackOutcome_->summary.succeeded);
+      if (!trackOutcome_->warning.empty()) {
+        message += tr(" Warning: %1").arg(QString::fromStdString(trackOutcome_->warning));
+      }
+      emit statusMessage(message);
     }
     trackOutcome_.reset();
     resetOverlayFitter();
