@@ -5,6 +5,15 @@
 #ifdef CLM3D_HAVE_DLIB
 #include <dlib/image_processing/frontal_face_detector.h>
 #include <dlib/image_transforms/interpolation.h>
+
+#include <sstream>
+#include <string_view>
+
+namespace clm3d::embedded {
+// dlib::serialize of get_frontal_face_detector(), written at build time
+// (build_tools/embed_dlib_detector.cpp).
+std::string_view dlibFrontalFaceDetector();
+}  // namespace clm3d::embedded
 #endif
 
 namespace clm3d::detail {
@@ -14,10 +23,24 @@ namespace clm3d::detail {
 namespace {
 // dlib's frontal detector scans an 80 x 80 pixel window; smaller faces need the image enlarged.
 constexpr int kDlibWindow = 80;
+
+// The detector from the copy serialized at build time (about 4 ms; dlib's own compressed copy
+// takes about 500 ms to decode), dlib's own if that copy does not read.
+dlib::frontal_face_detector loadFrontalFaceDetector() {
+  const std::string_view bytes = embedded::dlibFrontalFaceDetector();
+  try {
+    std::istringstream in{std::string(bytes)};
+    dlib::frontal_face_detector detector;
+    dlib::deserialize(detector, in);
+    if (detector.num_detectors() > 0) return detector;
+  } catch (const dlib::serialization_error&) {
+  }
+  return dlib::get_frontal_face_detector();
+}
 }  // namespace
 
 struct DlibHogDetector::Impl {
-  dlib::frontal_face_detector hog = dlib::get_frontal_face_detector();
+  dlib::frontal_face_detector hog = loadFrontalFaceDetector();
 };
 
 bool dlibAvailable() {
