@@ -6,7 +6,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "core/track/correction_loop.hpp"
+#include "core/track/review_list.hpp"
 
 namespace clm3d::ui {
 
@@ -21,12 +21,15 @@ ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"),
          "frame or where the track agrees with what the frame held"));
   lowConfidence_ = new QDoubleSpinBox(this);
   lowConfidence_->setObjectName(QStringLiteral("reviewConfidence"));
-  lowConfidence_->setRange(-1.0, 1.0);
+  lowConfidence_->setRange(-1.0, 0.99);
   lowConfidence_->setDecimals(2);
   lowConfidence_->setSingleStep(0.05);
-  lowConfidence_->setValue(ReviewRules{}.lowConfidence);
+  lowConfidence_->setValue(ReviewListSettings{}.lowConfidence);
   lowConfidence_->setPrefix(tr("review below "));
-  lowConfidence_->setToolTip(tr("Frames below this confidence need review (N), as do failed ones"));
+  lowConfidence_->setToolTip(
+      tr("Frames below this confidence are worth a look (N), as are failed ones, frames where a "
+         "point jumps and frames where a point leaves its smooth path (clm3d review "
+         "--low-confidence)"));
 
   const auto button = [this](const QString& text, const QString& name, const QString& tooltip) {
     auto* b = new QPushButton(text, this);
@@ -35,10 +38,12 @@ ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"),
     return b;
   };
   QPushButton* next = button(tr("Next to review (N)"), QStringLiteral("nextReviewButton"),
-                             tr("Go to the next failed or low-confidence frame that is not a "
-                                "keyframe (N; Shift+N: the previous one)"));
-  QPushButton* previous = button(tr("Previous (Shift+N)"), QStringLiteral("previousReviewButton"),
-                                 tr("Go to the previous failed or low-confidence frame (Shift+N)"));
+                             tr("Go to the next frame worth a look, in rank order (failed, low "
+                                "confidence, a jump, off the smooth path; marked on the timeline): "
+                                "N; Shift+N goes back up the list"));
+  QPushButton* previous =
+      button(tr("Previous (Shift+N)"), QStringLiteral("previousReviewButton"),
+             tr("Go to the frame before this one in the review list (Shift+N)"));
   QPushButton* accept = button(tr("Accept as keyframe (A)"), QStringLiteral("acceptButton"),
                                tr("This frame's points are right: mark it as a keyframe and go "
                                   "to the next frame to review (A)"));
@@ -74,6 +79,8 @@ ReviewPanel::ReviewPanel(QWidget* parent) : QGroupBox(tr("Review and re-track"),
   connect(previousKey, &QPushButton::clicked, this, [this] { emit keyframeRequested(-1); });
   connect(accept, &QPushButton::clicked, this, &ReviewPanel::acceptRequested);
   connect(backward, &QPushButton::clicked, this, &ReviewPanel::backwardRequested);
+  connect(lowConfidence_, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+          &ReviewPanel::lowConfidenceChanged);
 }
 
 bool ReviewPanel::loopEnabled() const {

@@ -1,7 +1,7 @@
 // The Track page's review and correction-loop controls: whether a drag re-tracks by itself (the
 // tracker in the loop), the confidence below which a frame needs a look, and buttons for the
-// keyboard review (next / previous frame to review, accept as keyframe, next / previous keyframe,
-// re-track backwards), each showing its shortcut. It only emits; the page does the work
+// keyboard review (next / previous frame of the review list, accept as keyframe, next / previous
+// keyframe, re-track backwards), each showing its shortcut. It only emits; the page does the work
 // (track_page_loop.cpp) and owns the shortcuts.
 #pragma once
 
@@ -30,6 +30,7 @@ class ReviewPanel : public QGroupBox {
   void keyframeRequested(int step);  // +1 next, -1 previous keyframe
   void acceptRequested();
   void backwardRequested();
+  void lowConfidenceChanged(double value);
 
  private:
   QCheckBox* loop_;

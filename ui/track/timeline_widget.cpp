@@ -111,7 +111,12 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
       const QPointF triangle[3] = {{x - 5, 1}, {x + 5, 1}, {x, kMarkHeight}};
       painter.drawPolygon(triangle, 3);
     }
+    // Frames worth a look: magenta ticks in the same strip (keyframes are never listed).
     painter.setRenderHint(QPainter::Antialiasing, false);
+    for (const int f : data_.review) {
+      if (f < 0 || f >= n) continue;
+      painter.fillRect(QRectF(xOf(f) - 1.5, 1, 3, kMarkHeight), QColor(200, 30, 170));
+    }
     // Current frame.
     painter.setPen(QPen(QColor(30, 90, 220), 2));
     const double x = xOf(std::clamp(current_, 0, n - 1));
@@ -123,9 +128,11 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
   // Legend.
   painter.setPen(palette().windowText().color());
   const double y = height() - kLegendHeight + 13;
-  const QString legend = tr("bars: confidence 0-1 (red = failed)    orange: error vs ground truth "
-                            "(top = %1)    gold: keyframes    blue: current frame")
-                             .arg(errorScale(), 0, 'f', 2);
+  const QString legend =
+      tr("bars: confidence 0-1 (red = failed)    orange: error vs ground truth "
+         "(top = %1)    gold: keyframes    magenta: worth a look (N)    blue: current "
+         "frame")
+          .arg(errorScale(), 0, 'f', 2);
   painter.drawText(QPointF(plot.left(), y), legend);
 }
 

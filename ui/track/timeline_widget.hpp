@@ -1,7 +1,8 @@
 // The review timeline under the frame: per-frame confidence as bars (failed frames red, frames not
 // tracked yet empty), the error against the ground truth as a line where it is known, keyframes as
-// gold marks, and the current-frame cursor. Clicking or dragging on it asks for that frame, so a
-// bad stretch of the track is found and reached at a glance.
+// gold marks, the frames worth a look as magenta ticks, and the current-frame cursor. Clicking or
+// dragging on it asks for that frame, so a bad stretch of the track is found and reached at a
+// glance.
 #pragma once
 
 #include <QWidget>
@@ -15,6 +16,7 @@ struct TimelineData {
   std::vector<bool> success;       // per tracked frame
   std::vector<bool> keyframe;      // per frame
   std::vector<double> error;       // per frame, NaN where unknown
+  std::vector<int> review;         // frames worth a look (core/track/review_list), any order
 };
 
 class TimelineWidget : public QWidget {
@@ -23,6 +25,7 @@ class TimelineWidget : public QWidget {
   explicit TimelineWidget(QWidget* parent = nullptr);
 
   void setData(TimelineData timeline);
+  const TimelineData& data() const { return data_; }
   void setCurrentFrame(int frame);
   int currentFrame() const { return current_; }
   // The frame under widget x, and the x of a frame's centre (for tests).

@@ -24,6 +24,8 @@
 #include "core/project/project.hpp"
 #include "core/project/project_layout.hpp"
 #include "core/review/review_overlay.hpp"
+#include "core/scheme/landmark_file.hpp"
+#include "core/track/coco_keypoints.hpp"
 #include "core/track/ground_truth.hpp"
 #include "core/track/track_table.hpp"
 #include "core/track/tracker.hpp"
@@ -551,13 +553,22 @@ bool TrackPage::save() {
   const bool saved = runReportingErrors(this, tr("Saving the ground truth failed"), [&] {
     fs::create_directories(csv.parent_path());
     saveGroundTruth(csv, session_.truth(), csv.parent_path());
+    // And as COCO keypoints beside it, for the tools that read those (docs/ground-truth.md).
+    const Scheme* scheme = session_.scheme();
+    if (!scheme || scheme->size() != session_.truth().table.landmarkCount) {
+      scheme = builtInSchemeOfSize(session_.truth().table.landmarkCount);
+    }
+    if (scheme && session_.video().width > 0 && session_.video().height > 0) {
+      saveCocoKeypoints(cocoKeypointsBeside(csv), session_.truth(), *scheme,
+                        {session_.video().width, session_.video().height});
+    }
   });
   if (!saved) return false;
   discardAutosave(csv);
   undo_.setClean();
   if (project_ && project_->addUnique(project_->groundTruth, csv)) emit projectModified();
-  emit statusMessage(tr("Ground truth saved to %1 (%2 keyframes)")
-                         .arg(qPath(csv))
+  emit statusMessage(tr("Ground truth saved to %1, the .pts files and %2 (%3 keyframes)")
+                         .arg(qPath(csv), qPath(cocoKeypointsBeside(csv)))
                          .arg(session_.truth().keyframeCount()));
   return true;
 }
@@ -738,6 +749,7 @@ void TrackPage::showFrame() {
 }
 
 void TrackPage::refreshTimeline() {
+  refreshReviewList();
   TimelineData timeline;
   timeline.frameCount = session_.video().frameCount;
   for (const TrackRow& row : session_.track().rows) {
@@ -746,6 +758,7 @@ void TrackPage::refreshTimeline() {
   }
   timeline.keyframe = session_.truth().keyframe;
   timeline.error = session_.errors();
+  for (const ReviewItem& item : reviewList_) timeline.review.push_back(item.frame);
   timeline_->setData(std::move(timeline));
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/review/track_session.hpp"
 #include "core/track/correction_loop.hpp"
+#include "core/track/review_list.hpp"
 #include "core/track/tracker.hpp"
 #include "ui/common/page.hpp"
 
@@ -105,8 +106,14 @@ class TrackPage : public Page {
   // Re-tracks from `frame`'s points over the loop's span (core/track/correction_loop.hpp), on the
   // worker; false (with a status message) when there is nothing to re-track or a job runs.
   bool retrackSpanFrom(int frame, RetrackDirection direction);
-  // The keyboard review: N / Shift+N, J / Shift+J, A. False when there is no such frame.
+  // The keyboard review: N / Shift+N walk the review list in rank order (from the current frame's
+  // rank, or from the rank last visited when the frame left the list), J / Shift+J, A. False when
+  // there is no such frame.
   bool goToNextToReview(int step);
+  // The frames worth a look (core/track/review_list.hpp), most severe first: the ground truth's
+  // rows that are not keyframes, so accepting or correcting a frame takes it off the list. Kept
+  // up to date with the truth; the timeline marks them.
+  const std::vector<ReviewItem>& reviewList() const { return reviewList_; }
   bool goToNextKeyframe(int step);
   bool acceptAsKeyframe();
   // A loop re-track is waiting for the drags to settle or running.
@@ -123,6 +130,7 @@ class TrackPage : public Page {
   void correctionMade(int frame);
   void startPendingLoop();
   void takeLoopOutcome();
+  void refreshReviewList();
   bool editsBlocked() const;  // a job other than a loop re-track runs
   // --- end of the correction loop --------------------------------------------------------------
 
@@ -190,6 +198,8 @@ class TrackPage : public Page {
   std::shared_ptr<LoopOutcome> loopOutcome_;
   int pendingLoopFrame_ = -1;
   int loopRetracks_ = 0;
+  std::vector<ReviewItem> reviewList_;
+  int reviewRank_ = -1;  // the rank N / Shift+N last went to
   TrackFilesPanel* trackFiles_ = nullptr;
   std::filesystem::path comparedCsv_;
 };

@@ -1,14 +1,17 @@
 // The Track page's tracker settings and correction loop (declared in track_page.hpp's delimited
 // block): the settings dialog and its memory in the project, the re-track that follows a drag by
 // itself (debounced, on the worker, merged into the drag's undo step), re-tracking backwards on
-// request, and the keyboard review. The rules themselves are core's (core/track/correction_loop).
+// request, and the keyboard review (the ranked list of frames worth a look). The rules themselves
+// are core's (core/track/correction_loop).
 #include <QBoxLayout>
 #include <QPushButton>
+#include <QStringList>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
 
 #include "core/project/project.hpp"
+#include "core/scheme/landmark_file.hpp"
 #include "core/track/tracker_options.hpp"
 #include "ui/common/error_dialog.hpp"
 #include "ui/common/job_runner.hpp"
@@ -55,6 +58,7 @@ void TrackPage::buildLoopControls(QBoxLayout* top, QBoxLayout* side) {
   connect(review_, &ReviewPanel::keyframeRequested, this,
           [this](int step) { goToNextKeyframe(step); });
   connect(review_, &ReviewPanel::acceptRequested, this, [this] { acceptAsKeyframe(); });
+  connect(review_, &ReviewPanel::lowConfidenceChanged, this, [this] { refreshTimeline(); });
   connect(review_, &ReviewPanel::backwardRequested, this,
           [this] { retrackSpanFrom(current_, RetrackDirection::Backward); });
   connect(review_, &ReviewPanel::loopToggled, this, [this](bool enabled) {
@@ -242,15 +246,58 @@ void TrackPage::takeLoopOutcome() {
       tr("Re-tracked %1 frames from frame %2 (%3).").arg(count).arg(corrected).arg(why));
 }
 
+void TrackPage::refreshReviewList() {
+  reviewList_.clear();
+  const GroundTruthSet& truth = session_.truth();
+  const int n = truth.table.landmarkCount;
+  if (n == 0) return;  // no track or ground truth yet
+  const Scheme* scheme = session_.scheme();
+  if (!scheme || scheme->size() != n) scheme = builtInSchemeOfSize(n);
+  if (!scheme) return;  // no eye points to measure jumps by
+  ReviewListSettings settings;
+  settings.lowConfidence = review_->lowConfidence();
+  reviewList_ =
+      rankFramesForReview(truth.table, truth.keyframe, scheme->normalisationPair(), settings);
+}
+
 bool TrackPage::goToNextToReview(int step) {
-  const int frame =
-      nextToReview(session_.truth(), current_, step, ReviewRules{review_->lowConfidence()});
-  if (frame < 0) {
-    emit statusMessage(tr("No other frame needs review (failed, or confidence below %1).")
+  const auto count = static_cast<int>(reviewList_.size());
+  if (count == 0 || (step != 1 && step != -1)) {
+    emit statusMessage(tr("No frame is worth a look (failed, confidence below %1, a jump or off "
+                          "the smooth path).")
                            .arg(review_->lowConfidence(), 0, 'f', 2));
     return false;
   }
-  setCurrentFrame(frame);
+  int rank = -1;
+  for (int r = 0; r < count; ++r) {
+    if (reviewList_[static_cast<std::size_t>(r)].frame == current_) rank = r;
+  }
+  int target = 0;
+  if (rank >= 0) {
+    target = rank + step;  // along the list from the current frame's rank
+  } else if (reviewRank_ >= 0) {
+    // The frame left the list (accepted or corrected): the next one took its rank.
+    target = step > 0 ? reviewRank_ : reviewRank_ - 1;
+  } else {
+    target = step > 0 ? 0 : count - 1;
+  }
+  target = ((target % count) + count) % count;  // wrapping around the ends
+  const ReviewItem& item = reviewList_[static_cast<std::size_t>(target)];
+  if (item.frame == current_) return false;
+  reviewRank_ = target;
+  setCurrentFrame(item.frame);
+  QStringList why;
+  for (const ReviewReason& reason : item.reasons) {
+    QString text = QString::fromLatin1(reviewCriterionName(reason.criterion));
+    if (std::isfinite(reason.value)) text += QStringLiteral(" %1").arg(reason.value, 0, 'g', 3);
+    if (reason.point >= 0) text += tr(" (point %1)").arg(reason.point + 1);
+    why << text;
+  }
+  emit statusMessage(tr("Worth a look %1 of %2: frame %3, %4")
+                         .arg(target + 1)
+                         .arg(count)
+                         .arg(item.frame)
+                         .arg(why.join(QStringLiteral(", "))));
   return true;
 }
 
