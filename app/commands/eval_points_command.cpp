@@ -15,6 +15,7 @@
 #include "core/eval/confidence_roc.hpp"
 #include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"
+#include "core/eval/yaw_bands.hpp"
 #include "core/scheme/scheme.hpp"
 
 namespace clm3d::cli {
@@ -36,6 +37,8 @@ struct EvalPointsArgs {
   fs::path out;
   bool roc = false;
   double wrongAbove = 0.15;
+  fs::path poses;
+  std::string yawBands = "0,30,60,90";
 };
 
 void runEvalPoints(const EvalPointsArgs& args) {
@@ -56,6 +59,9 @@ void runEvalPoints(const EvalPointsArgs& args) {
   if (files && args.roc) {
     throw CLI::ValidationError("--roc", "the confidence ROC goes with --truth-dir");
   }
+  if (files && !args.poses.empty()) {
+    throw CLI::ValidationError("--poses", "the yaw-band table goes with --truth-dir");
+  }
   if (files && !args.csv.empty()) {
     throw CLI::ValidationError("--csv", "the per-image table goes with --truth-dir");
   }
@@ -69,8 +75,15 @@ void runEvalPoints(const EvalPointsArgs& args) {
     }
   }
   if (!args.truthDir.empty()) {
-    const auto report = evaluatePointFolders(args.truthDir, args.predictionDirs, args.labels,
-                                             scheme, selected, args.threshold);
+    auto report = evaluatePointFolders(args.truthDir, args.predictionDirs, args.labels, scheme,
+                                       selected, args.threshold);
+    const std::vector<double> edges = parseBandEdges(args.yawBands);
+    if (!args.poses.empty()) {
+      addYawBands(report, yawsByStem(report, readPoseCsv(args.poses)), edges,
+                  "yaw from " + args.poses.string());
+    } else if (!args.json) {
+      std::cout << "yaw bands: skipped (give --poses F.csv with columns image,yaw_deg)\n";
+    }
     std::cout << (args.json ? formatPointFolderJson(report) : formatPointFolderText(report));
     auto& notes = args.json ? std::cerr : std::cout;
     if (!args.out.empty()) {
@@ -147,6 +160,13 @@ void addEvalPointsCommand(CLI::App& root) {
                    "For --roc: a fit whose error exceeds this is wrong")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 10.0));
+  command->add_option("--poses", args->poses,
+                      "With --truth-dir: CSV with columns image,yaw_deg (e.g. AFLW's index.csv); "
+                      "adds the per-|yaw|-band table");
+  command
+      ->add_option("--yaw-bands", args->yawBands,
+                   "Edges of the |yaw| bands in degrees, ascending, e.g. 0,45,90")
+      ->capture_default_str();
   command->add_option("--out", args->out, "Also write the JSON report to this file");
   command->callback([args] { runEvalPoints(*args); });
 }

@@ -9,10 +9,12 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/common/atomic_file.hpp"
 #include "core/common/csv_cell.hpp"
 #include "core/common/error.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/eval/statistics.hpp"
+#include "core/eval/yaw_bands.hpp"
 #include "core/scheme/landmark_file.hpp"
 
 namespace clm3d {
@@ -31,6 +33,41 @@ int presentSelected(const LandmarkSet& truth, const std::vector<int>& selected) 
   if (selected.empty()) return truth.presentCount();
   for (const int i : selected) count += truth.has(i) ? 1 : 0;
   return count;
+}
+
+// AFLW writes an invisible point as "-1 -1" (1-based), read as (-2, -2): such a point is missing.
+void dropInvisibleMarks(LandmarkSet& set, const fs::path& file) {
+  if (file.extension() != ".pts") return;
+  for (int i = 0; i < set.size(); ++i) {
+    if (set.has(i) && set.point(i).x() == -2.0 && set.point(i).y() == -2.0) set.setMissing(i);
+  }
+}
+
+// The stems that the folder's summary.csv (clm3d fit --images) marks "rejected"; none without a
+// summary or without a status column.
+std::vector<std::string> rejectedStems(const fs::path& folder) {
+  std::vector<std::string> stems;
+  const fs::path summary = folder / "summary.csv";
+  std::error_code error;
+  if (!fs::is_regular_file(summary, error)) return stems;
+  std::istringstream lines(readTextFile(summary));
+  std::string line;
+  std::getline(lines, line);
+  const auto header = parseCsvLine(line);
+  if (!header) throwInputError(summary, "malformed header line");
+  const auto image = std::find(header->begin(), header->end(), "image");
+  const auto status = std::find(header->begin(), header->end(), "status");
+  if (image == header->end() || status == header->end()) return stems;
+  const auto imageColumn = static_cast<std::size_t>(image - header->begin());
+  const auto statusColumn = static_cast<std::size_t>(status - header->begin());
+  while (std::getline(lines, line)) {
+    const auto cells = parseCsvLine(line);
+    if (!cells || cells->size() <= std::max(imageColumn, statusColumn)) continue;
+    if ((*cells)[statusColumn] == "rejected") {
+      stems.push_back(fs::path((*cells)[imageColumn]).stem().string());
+    }
+  }
+  return stems;
 }
 
 }  // namespace
@@ -66,6 +103,7 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
   std::vector<LandmarkSet> truths;
   for (const fs::path& file : truthFiles) {
     LandmarkSet truth = readLandmarks(file, &scheme);
+    dropInvisibleMarks(truth, file);
     if (!truth.has(a) || !truth.has(b) ||
         !((truth.point(a) - truth.point(b)).head<2>().norm() > 1e-9)) {
       throwInputError(file, "no usable normalisation pair (points " + std::to_string(a + 1) +
@@ -75,6 +113,7 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
     report.truePoints.push_back(presentSelected(truth, selected));
     truths.push_back(std::move(truth));
   }
+  report.truths = truths;
 
   for (std::size_t m = 0; m < predictionFolders.size(); ++m) {
     PointFolderMethod method;
@@ -84,7 +123,11 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
     method.label = !labels.empty() ? labels[m] : name.filename().string();
     if (method.label.empty()) method.label = method.folder.string();
     std::vector<double> errors;
+    std::vector<double> boxErrors;
+    const std::vector<std::string> rejected = rejectedStems(method.folder);
     for (std::size_t i = 0; i < truths.size(); ++i) {
+      method.rejected.push_back(std::find(rejected.begin(), rejected.end(), report.stems[i]) !=
+                                rejected.end());
       ++method.images;
       method.truePoints += report.truePoints[i];
       std::optional<fs::path> file;
@@ -102,7 +145,8 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
         continue;
       }
       ++method.predicted;
-      const LandmarkSet prediction = readLandmarks(*file, &scheme);
+      LandmarkSet prediction = readLandmarks(*file, &scheme);
+      dropInvisibleMarks(prediction, *file);
       PointSetError result;
       try {
         result = evaluatePointSet(truths[i], prediction, scheme, selected, threshold);
@@ -112,11 +156,14 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
       result.label = method.label;
       method.foundPoints += result.foundPoints;
       if (std::isfinite(result.error)) errors.push_back(result.error);
+      if (std::isfinite(result.boxError)) boxErrors.push_back(result.boxError);
       method.results.emplace_back(std::move(result));
     }
     const Descriptive stats = describe(errors);
     method.meanError = errors.empty() ? std::numeric_limits<double>::quiet_NaN() : stats.mean;
     method.medianError = errors.empty() ? std::numeric_limits<double>::quiet_NaN() : stats.median;
+    method.meanBoxError =
+        boxErrors.empty() ? std::numeric_limits<double>::quiet_NaN() : describe(boxErrors).mean;
     method.foundShare = method.truePoints > 0
                             ? static_cast<double>(method.foundPoints) / method.truePoints
                             : std::numeric_limits<double>::quiet_NaN();
@@ -142,8 +189,10 @@ std::string formatPointFolderText(const PointFolderReport& report) {
         << m.images << " images; within " << fixedCell(report.threshold, 2) << ": " << m.foundPoints
         << '/' << m.truePoints << " points ("
         << (std::isfinite(m.foundShare) ? fixedCell(100.0 * m.foundShare, 1) + "%" : "n/a")
-        << "); missing predictions: " << m.missing << '\n';
+        << "); missing predictions: " << m.missing << "; mean error / face box "
+        << formatErrorValue(m.meanBoxError) << '\n';
   }
+  if (!report.bandEdges.empty()) out << formatYawBandText(report);
   return out.str();
 }
 
@@ -160,36 +209,62 @@ std::string formatPointFolderJson(const PointFolderReport& report) {
                        {"missing", m.missing},
                        {"mean_error", number(m.meanError)},
                        {"median_error", number(m.medianError)},
+                       {"mean_box_error", number(m.meanBoxError)},
                        {"true_points", m.truePoints},
                        {"found_points", m.foundPoints},
                        {"found_share", number(m.foundShare)}});
+    if (report.bandEdges.empty()) continue;
+    json bands = json::array();
+    for (std::size_t b = 0; b < m.bands.size(); ++b) {
+      const PointFolderMethod::Band& band = m.bands[b];
+      bands.push_back({{"min_abs_yaw", report.bandEdges[b]},
+                       {"max_abs_yaw", report.bandEdges[b + 1]},
+                       {"faces", band.faces},
+                       {"fitted", band.fitted},
+                       {"mean_box_error", number(band.meanBoxError)},
+                       {"mean_error", number(band.meanEyeError)},
+                       {"true_points", band.truePoints},
+                       {"found_points", band.foundPoints},
+                       {"found_share", number(band.foundShare)}});
+    }
+    methods.back()["bands"] = bands;
   }
-  const json document = {{"format", "clm3d-point-folder-evaluation"},
-                         {"version", 1},
-                         {"scheme", report.schemeName},
-                         {"truth_folder", report.truthFolder.string()},
-                         {"threshold", report.threshold},
-                         {"points", points},
-                         {"images", report.stems.size()},
-                         {"methods", methods}};
+  json document = {{"format", "clm3d-point-folder-evaluation"},
+                   {"version", 1},
+                   {"scheme", report.schemeName},
+                   {"truth_folder", report.truthFolder.string()},
+                   {"threshold", report.threshold},
+                   {"points", points},
+                   {"images", report.stems.size()},
+                   {"methods", methods}};
+  if (!report.bandEdges.empty()) {
+    document["yaw_source"] = report.yawSource;
+    document["band_edges"] = report.bandEdges;
+  }
   return document.dump(2) + "\n";
 }
 
 std::string formatPointFolderCsv(const PointFolderReport& report) {
   std::ostringstream out;
   out << "image,method,status,error,max_error,true_points,scored_points,found_points,inter_ocular,"
-         "prediction\n";
+         "box_error,box_size,yaw_deg,prediction\n";
   for (std::size_t i = 0; i < report.stems.size(); ++i) {
     for (const PointFolderMethod& m : report.methods) {
       out << csvCell(report.stems[i]) << ',' << csvCell(m.label) << ',';
       const auto& result = m.results[i];
+      const std::string yaw = i < report.yawDeg.size() && std::isfinite(report.yawDeg[i])
+                                  ? fixedCell(report.yawDeg[i], 2)
+                                  : std::string();
       if (!result) {
-        out << "missing,,," << report.truePoints[i] << ",,,,\n";
+        out << "missing,,," << report.truePoints[i] << ",,,,,," << yaw << ",\n";
         continue;
       }
-      out << "ok," << fixedCell(result->error, 6) << ',' << fixedCell(result->maxError, 6) << ','
-          << result->truePoints << ',' << result->scoredPoints << ',' << result->foundPoints << ','
-          << fixedCell(result->interOcular, 3) << ',' << csvCell(m.files[i]->string()) << '\n';
+      out << (m.rejected[i] ? "rejected," : "ok,") << fixedCell(result->error, 6) << ','
+          << fixedCell(result->maxError, 6) << ',' << result->truePoints << ','
+          << result->scoredPoints << ',' << result->foundPoints << ','
+          << fixedCell(result->interOcular, 3) << ',' << fixedCell(result->boxError, 6) << ','
+          << fixedCell(result->boxSize, 3) << ',' << yaw << ',' << csvCell(m.files[i]->string())
+          << '\n';
     }
   }
   return out.str();

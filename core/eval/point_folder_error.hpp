@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/eval/point_set_error.hpp"
+#include "core/scheme/landmark_set.hpp"
 #include "core/scheme/scheme.hpp"
 
 namespace clm3d {
@@ -30,23 +31,48 @@ struct PointFolderMethod {
   int truePoints = 0;        // selected points present in the truths, over every truth image
   int foundPoints = 0;       // of those, predicted within the threshold
   double foundShare = 0.0;   // foundPoints / truePoints (missing predictions count as not found)
+  double meanBoxError =
+      0.0;  // mean of the per-image errors / face box (PointSetError); NaN if none
+  // Per truth image: the folder's summary.csv (clm3d fit --images) has status "rejected" for it.
+  // Such an image is not fitted in the yaw-band table even when its points were kept.
+  std::vector<bool> rejected;
+  // With yaw bands: one row per band (PointFolderReport::bandEdges).
+  struct Band {
+    int faces = 0;              // truth images whose |yaw| falls in the band
+    int fitted = 0;             // of those, with a prediction that was not rejected
+    double meanBoxError = 0.0;  // over the fitted faces with a scored point; NaN if none
+    double meanEyeError = 0.0;  // the same, normalised by the eye distance
+    int truePoints = 0;         // selected points present in the band's truths
+    int foundPoints = 0;        // of those, fitted and within the threshold
+    double foundShare = 0.0;    // foundPoints / truePoints (unfitted faces count as not found)
+  };
+  std::vector<Band> bands;
 };
 
 struct PointFolderReport {
   std::string schemeName;
   std::filesystem::path truthFolder;
   double threshold = 0.18;
-  std::vector<int> selected;       // 0-based; empty = every point
-  std::vector<std::string> stems;  // the truth images, sorted
-  std::vector<int> truePoints;     // per image: selected points present in its truth
+  std::vector<int> selected;        // 0-based; empty = every point
+  std::vector<std::string> stems;   // the truth images, sorted
+  std::vector<int> truePoints;      // per image: selected points present in its truth
+  std::vector<LandmarkSet> truths;  // per image, as read for the scheme (invisible points missing)
   std::vector<PointFolderMethod> methods;
+  // Yaw bands (core/eval/yaw_bands.hpp): per image the truth's yaw in degrees (NaN: unknown, in no
+  // band), the |yaw| edges (bands [e0,e1), [e1,e2), ... the last closed) and where the yaws came
+  // from. Empty when there is no band table.
+  std::vector<double> yawDeg;
+  std::vector<double> bandEdges;
+  std::string yawSource;
 };
 
 // Truths are the folder's *.pts files (read for the scheme: a 68-point file is converted to
-// thesis25); predictions are STEM.pts, STEM.ljson or STEM.csv in each prediction folder (the first
-// that exists). labels: empty or one per folder. Throws InputError naming the folder or file: a
-// folder missing or without a .pts truth, a truth without a usable normalisation pair, an
-// unreadable prediction or one with the wrong point count, a label count that does not match.
+// thesis25; a point written "-1 -1", AFLW's mark of an invisible point, is missing, in the truths
+// and in .pts predictions); predictions are STEM.pts, STEM.ljson or STEM.csv in each prediction
+// folder (the first that exists). labels: empty or one per folder. Throws InputError naming the
+// folder or file: a folder missing or without a .pts truth, a truth without a usable normalisation
+// pair, an unreadable prediction or one with the wrong point count, a label count that does not
+// match.
 PointFolderReport evaluatePointFolders(const std::filesystem::path& truthFolder,
                                        const std::vector<std::filesystem::path>& predictionFolders,
                                        const std::vector<std::string>& labels, const Scheme& scheme,
@@ -57,10 +83,14 @@ PointFolderReport evaluatePointFolders(const std::filesystem::path& truthFolder,
 std::string formatPointFolderText(const PointFolderReport& report);
 // {"format": "clm3d-point-folder-evaluation", "version": 1, "scheme", "truth_folder", "threshold",
 // "points" (1-based), "images", "methods": [{"label", "folder", "predicted", "missing",
-// "mean_error", "median_error", "true_points", "found_points", "found_share"}]}. NaN is null.
+// "mean_error", "median_error", "mean_box_error", "true_points", "found_points", "found_share"}]}
+// and, with yaw bands, "yaw_source", "band_edges" and per method "bands": [{"min_abs_yaw",
+// "max_abs_yaw", "faces", "fitted", "mean_box_error", "mean_error", "true_points",
+// "found_points", "found_share"}]. NaN is null.
 std::string formatPointFolderJson(const PointFolderReport& report);
 // One row per image and method: "image,method,status,error,max_error,true_points,scored_points,
-// found_points,inter_ocular,prediction" with status ok or missing (empty numbers when missing).
+// found_points,inter_ocular,box_error,box_size,yaw_deg,prediction" with status ok, rejected or
+// missing (empty numbers when missing; yaw_deg empty when unknown).
 std::string formatPointFolderCsv(const PointFolderReport& report);
 
 }  // namespace clm3d

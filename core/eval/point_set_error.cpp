@@ -108,6 +108,17 @@ PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& pred
   result.selected = static_cast<int>(points.size());
   double sum = 0.0;
   result.maxError = nan;
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d high = -low;
+  int boxPoints = 0;
+  for (int i = 0; i < scheme.size(); ++i) {
+    if (!truth.has(i)) continue;
+    low = low.cwiseMin(xy(truth, i));
+    high = high.cwiseMax(xy(truth, i));
+    ++boxPoints;
+  }
+  const double area = boxPoints >= 2 ? (high - low).prod() : 0.0;
+  result.boxSize = area > 0.0 ? std::sqrt(area) : nan;
   for (const int i : points) {
     if (i < 0 || i >= scheme.size()) {
       throw std::invalid_argument("selected point index " + std::to_string(i) + " out of range");
@@ -123,6 +134,9 @@ PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& pred
     result.maxError = std::isnan(result.maxError) ? e : std::max(result.maxError, e);
   }
   result.error = result.scoredPoints > 0 ? sum / result.scoredPoints : nan;
+  // sum is in eye distances; the mean pixel error over the box size.
+  result.boxError =
+      result.scoredPoints > 0 ? result.error * result.interOcular / result.boxSize : nan;
   return result;
 }
 
@@ -200,6 +214,8 @@ std::string formatPointReportJson(const PointEvaluationReport& report) {
                            {"file", report.predictionSources[i]},
                            {"error", number(r.error)},
                            {"max_error", number(r.maxError)},
+                           {"box_error", number(r.boxError)},
+                           {"box_size", number(r.boxSize)},
                            {"inter_ocular", number(r.interOcular)},
                            {"selected", r.selected},
                            {"true_points", r.truePoints},

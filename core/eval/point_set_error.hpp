@@ -29,13 +29,20 @@ struct PointSetError {
   int foundPoints = 0;       // ... with normalised error <= threshold
   double error = 0.0;        // mean normalised error over the scored points; NaN if none
   double maxError = 0.0;     // largest normalised point error; NaN if none
+  // The face box: sqrt(w * h) of the axis-aligned bounding box of every point present in the
+  // truth (all of the scheme's present points, not only the selected ones), pixels; NaN if the
+  // truth has fewer than 2 present points or the box has no area.
+  double boxSize = 0.0;
+  // Mean pixel error over the scored points divided by boxSize: the normalisation used at large
+  // pose, where the eye distance shrinks as the head turns; NaN if no point is scored.
+  double boxError = 0.0;
   // Per scheme point: the normalised error, NaN where not selected or missing in either set.
   std::vector<double> pointErrors;
 };
 
 // Compares prediction with truth (both in the scheme's order and size) over the selected points
 // (0-based; empty = every point). The normalisation pair need not be selected, but must be present
-// and apart in the truth: otherwise std::invalid_argument.
+// and apart in the truth: otherwise std::invalid_argument. Also the box-normalised error.
 PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& prediction,
                                const Scheme& scheme, const std::vector<int>& selected,
                                double threshold = 0.18);

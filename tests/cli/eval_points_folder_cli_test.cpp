@@ -88,12 +88,12 @@ TEST(EvalPointsFolderCli, PairsByStemCountsMissingPredictionsAndWritesTheTable) 
   ASSERT_EQ(rows.size(), 7U) << table;
   EXPECT_EQ(rows[0],
             "image,method,status,error,max_error,true_points,scored_points,found_points,"
-            "inter_ocular,prediction");
+            "inter_ocular,box_error,box_size,yaw_deg,prediction");
   EXPECT_TRUE(test::contains(rows[1], "img1,fits-a,ok,0.100000,0.100000,23,23,23,40.000,"))
       << rows[1];
   EXPECT_TRUE(test::contains(rows[3], "img2,fits-a,ok,0.200000,0.200000,23,23,0,40.000,"))
       << rows[3];
-  EXPECT_EQ(rows[5], "img3,fits-a,missing,,,23,,,,");
+  EXPECT_EQ(rows[5], "img3,fits-a,missing,,,23,,,,,,,");
   EXPECT_TRUE(test::contains(rows[6], "img3,fits-b,ok,0.050000,")) << rows[6];
   EXPECT_TRUE(test::contains(rows[6], "img3.ljson")) << rows[6];
 
@@ -103,6 +103,36 @@ TEST(EvalPointsFolderCli, PairsByStemCountsMissingPredictionsAndWritesTheTable) 
   EXPECT_EQ(json["methods"][0]["missing"], 1);
   EXPECT_NEAR(json["methods"][0]["median_error"].get<double>(), 0.15, 1e-9);
   EXPECT_NEAR(json["methods"][1]["found_share"].get<double>(), 1.0, 1e-12);
+}
+
+TEST(EvalPointsFolderCli, YawBandsFromAPosesCsv) {
+  const FolderFiles f;
+  const fs::path poses = f.dir / "index.csv";
+  test::writeFile(poses,
+                  "image,yaw_deg,visible_count,split\nimages/img1.jpg,-20,21,test\n"
+                  "images/img2.jpg,50,15,test\nimages/img3.jpg,80,12,test\n");
+  const auto text =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
+               " --poses " + poses.string() + " --yaw-bands 0,45,90");
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_TRUE(test::contains(text.output, "|yaw| 0-45  fits-a  faces 1  fitted 1")) << text.output;
+  EXPECT_TRUE(test::contains(text.output, "|yaw| 45-90  fits-a  faces 2  fitted 1")) << text.output;
+  const auto json = nlohmann::json::parse(runClm3d("eval-points --truth-dir " + f.truth.string() +
+                                                   " --pred-dir " + f.methodA.string() +
+                                                   " --poses " + poses.string() + " --json")
+                                              .output);
+  ASSERT_EQ(json["methods"][0]["bands"].size(), 3U);
+  EXPECT_EQ(json["methods"][0]["bands"][2]["faces"], 1);  // img3, 80 degrees: no prediction
+  EXPECT_EQ(json["methods"][0]["bands"][2]["fitted"], 0);
+  EXPECT_NEAR(json["methods"][0]["bands"][1]["mean_error"].get<double>(), 0.2, 1e-9);
+  const auto none =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string());
+  EXPECT_TRUE(test::contains(none.output, "yaw bands: skipped")) << none.output;
+  const auto bad =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
+               " --poses " + poses.string() + " --yaw-bands 60,30");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_TRUE(test::contains(bad.output, "yaw band edges '60,30'")) << bad.output;
 }
 
 TEST(EvalPointsFolderCli, ChosenPointsAndLabels) {

@@ -152,5 +152,31 @@ TEST(PointSetError, FileErrorsNameTheFile) {
                InputError);
 }
 
+// Box normalisation on a hand-made truth: four present points spanning x 90..150 and y 80..160,
+// a box of 60 x 80 pixels whatever points are selected.
+TEST(PointSetError, BoxNormalisedErrorDividesTheMeanPixelErrorBySqrtOfTheTruthBoxArea) {
+  const auto& scheme = Scheme::thesis25();
+  LandmarkSet truth(25, 2);
+  truth.set(7, Eigen::Vector2d(130.0, 100.0));  // eye centres 30 pixels apart
+  truth.set(10, Eigen::Vector2d(100.0, 100.0));
+  truth.set(0, Eigen::Vector2d(90.0, 80.0));
+  truth.set(20, Eigen::Vector2d(150.0, 160.0));
+  LandmarkSet prediction = truth;
+  prediction.set(0, Eigen::Vector2d(96.0, 80.0));    // 6 pixels off
+  prediction.setMissing(20);                         // not scored, still in the truth's box
+  prediction.set(3, Eigen::Vector2d(900.0, 900.0));  // not in the truth: not scored
+  const auto r = evaluatePointSet(truth, prediction, scheme, {});
+  EXPECT_EQ(r.truePoints, 4);
+  EXPECT_EQ(r.scoredPoints, 3);
+  EXPECT_NEAR(r.boxSize, std::sqrt(60.0 * 80.0), 1e-9);
+  // 6 pixels over 3 scored points = 2 pixels; over the eye distance 30 and over the box.
+  EXPECT_NEAR(r.error, 2.0 / 30.0, 1e-12);
+  EXPECT_NEAR(r.boxError, 2.0 / std::sqrt(4800.0), 1e-12);
+  // Selecting one point changes the mean but not the box.
+  const auto one = evaluatePointSet(truth, prediction, scheme, {0});
+  EXPECT_NEAR(one.boxSize, std::sqrt(4800.0), 1e-9);
+  EXPECT_NEAR(one.boxError, 6.0 / std::sqrt(4800.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace clm3d
