@@ -78,6 +78,7 @@ class AnnotatePageTest : public QObject {
   LandmarkSet truth_, otherTruth_;
   TexturedMesh headMesh_;
   double longestLoadStallMs_ = 0.0;
+  int mostLoadBlockedIntervals_ = 0;  // of one load, StallWatchdog::blockedIntervals
 
   fs::path makeHead(std::uint64_t seed, const std::string& name, LandmarkSet* truth,
                     TexturedMesh* mesh = nullptr) {
@@ -102,6 +103,7 @@ class AnnotatePageTest : public QObject {
     QTest::qWait(50);
     watchdog.stop();
     longestLoadStallMs_ = std::max(longestLoadStallMs_, watchdog.longestStallMs());
+    mostLoadBlockedIntervals_ = std::max(mostLoadBlockedIntervals_, watchdog.blockedIntervals());
     return page;
   }
 
@@ -158,7 +160,15 @@ class AnnotatePageTest : public QObject {
     // A click beside the head places nothing.
     QTest::mouseClick(page->view(), Qt::LeftButton, Qt::NoModifier, QPoint(5, 5));
     QCOMPARE(page->undoStack()->count(), 6);
-    qInfo("longest GUI stall while loading: %.1f ms", longestLoadStallMs_);
+    qInfo("loading a scan: longest GUI stall %.1f ms, at most %d blocked intervals of %.0f ms",
+          longestLoadStallMs_, mostLoadBlockedIntervals_, test::kStallTargetMs);
+    // Known: opening a scan blocks the GUI thread 0.8-1.8 s (811 and 1807 ms in two runs, 13 and
+    // 25 blocked intervals, measured for issue 30; before, this figure was printed only). Expected
+    // to fail until the load moves off the GUI thread; an unexpected pass (XPASS) fails the test,
+    // so the mark is removed when it is fixed.
+    QEXPECT_FAIL("", "opening a scan stalls the GUI thread ~1.8 s (issue 30)", Continue);
+    QVERIFY2(mostLoadBlockedIntervals_ <= test::kStallBudget,
+             qPrintable(QString("%1 blocked intervals").arg(mostLoadBlockedIntervals_)));
     QElapsedTimer clock;
     clock.start();
     for (int i = 0; i < 5; ++i) page->view()->render();

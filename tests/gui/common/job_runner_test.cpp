@@ -34,8 +34,8 @@ class JobRunnerTest : public QObject {
     QVERIFY(progressed.count() >= 2);
     QCOMPARE(progressed.last().at(0).toDouble(), 1.0);
     QVERIFY(watchdog.ticks() > 20);
-    QVERIFY2(watchdog.longestStallMs() < test::kStallBoundMs,
-             qPrintable(QString("stall %1 ms").arg(watchdog.longestStallMs())));
+    qInfo("job runner: %s", qPrintable(watchdog.summary()));
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
     QVERIFY(!runner.isRunning() || runner.wait(1000));
   }
 

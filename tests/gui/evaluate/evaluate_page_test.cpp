@@ -126,8 +126,8 @@ class EvaluatePageTest : public QObject {
     watchdog.start();
     QVERIFY(runPage(page));
     watchdog.stop();
-    QVERIFY2(watchdog.longestStallMs() < test::kStallBoundMs,
-             qPrintable(QString("stall %1 ms").arg(watchdog.longestStallMs())));
+    qInfo("evaluating 2 predictions: GUI thread %s", qPrintable(watchdog.summary()));
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
 
     const auto core = coreReport(files.truth, {files.close, files.far});
     const std::string printed = formatReportText(core);  // what `clm3d eval` prints
@@ -312,9 +312,8 @@ class EvaluatePageTest : public QObject {
     watchdog.start();
     QVERIFY(runPage(page));
     watchdog.stop();
-    qInfo("6000 frames x 2 predictions: longest GUI stall %.1f ms", watchdog.longestStallMs());
-    QVERIFY2(watchdog.longestStallMs() < test::kStallBoundMs,
-             qPrintable(QString("stall %1 ms").arg(watchdog.longestStallMs())));
+    qInfo("6000 frames x 2 predictions: GUI thread %s", qPrintable(watchdog.summary()));
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
   }
 
   void screenshot() {

@@ -9,6 +9,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "core/eval/landmark_error.hpp"
 #include "core/project/project.hpp"
 #include "tests/gui/project/isolated_settings.hpp"
 #include "tests/gui/support/gui_test_main.hpp"
@@ -81,6 +82,12 @@ class DemoProjectTest : public QObject {
     QCOMPARE(evaluate->inputs().checkedPredictions().size(), std::size_t{1});
     QCOMPARE(evaluate->inputs().checkedPredictions()[0], written.tracks.at(0));
     QCOMPARE(evaluate->report()->sequences.size(), std::size_t{1});
+    // The demo's track as the page scored it: mean error 0.0910, 85.9% of the points within 0.18
+    // (measured; tests/cli/demo_cli_test.cpp bounds the same run's report.json alike).
+    const ErrorSummary& quality = evaluate->report()->sequences[0].summary;
+    QVERIFY2(quality.mean < 0.100, qPrintable(QString("mean error %1").arg(quality.mean)));
+    QVERIFY2(quality.withinThreshold > 0.82,
+             qPrintable(QString("within 0.18: %1").arg(quality.withinThreshold)));
     QVERIFY(evaluate->summaryTable()->rowCount() > 0);
   }
 };

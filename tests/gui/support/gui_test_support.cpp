@@ -16,6 +16,7 @@ StallWatchdog::StallWatchdog(QObject* parent) : QObject(parent) {
     if (lastMs_ >= 0) {
       const double stall = static_cast<double>(now - lastMs_) - timer_.interval();
       if (stall > longestMs_) longestMs_ = stall;
+      if (stall >= kStallTargetMs) blocked_ += static_cast<int>(stall / kStallTargetMs);
     }
     lastMs_ = now;
     ++ticks_;
@@ -25,6 +26,7 @@ StallWatchdog::StallWatchdog(QObject* parent) : QObject(parent) {
 void StallWatchdog::start() {
   longestMs_ = 0.0;
   ticks_ = 0;
+  blocked_ = 0;
   lastMs_ = -1;
   clock_.start();
   timer_.start();
@@ -32,6 +34,15 @@ void StallWatchdog::start() {
 
 void StallWatchdog::stop() {
   timer_.stop();
+}
+
+QString StallWatchdog::summary() const {
+  return QString("longest stall %1 ms, %2 blocked intervals of %3 ms (budget %4) over %5 ticks")
+      .arg(longestMs_, 0, 'f', 1)
+      .arg(blocked_)
+      .arg(kStallTargetMs)
+      .arg(kStallBudget)
+      .arg(ticks_);
 }
 
 bool waitUntil(const std::function<bool()>& done, int timeoutMs) {

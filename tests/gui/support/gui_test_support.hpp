@@ -1,5 +1,5 @@
-// Helpers for the QTest GUI tests: a watchdog that measures the longest stall of the GUI thread's
-// event loop (the "no stall over 100 ms during training or tracking"), waiting on a
+// Helpers for the QTest GUI tests: a watchdog that measures the stalls of the GUI thread's event
+// loop against the studio's target (no stall over 100 ms during training or tracking), waiting on a
 // condition while events run, and closing the modal dialogs a test expects. Temporary folders,
 // paths and files come from tests/support/test_files.hpp, as for the GoogleTest suites.
 #pragma once
@@ -19,15 +19,19 @@
 
 namespace clm3d::test {
 
-// The bound a GUI test puts on a stall of the GUI thread (or one piece of GUI-thread work). It is
-// generous on purpose: it catches work that belongs on a worker thread (a training step or a video
-// decode blocking the loop for seconds), not the scheduling of a loaded shared machine. The
-// measured stalls are printed (qInfo) and the figures the studio is designed for (100 ms, 20 ms a
-// frame) are in docs/studio*.md, never asserted.
-inline constexpr double kStallBoundMs = 1000.0;
+// The studio's target: no stall of the GUI thread's event loop over 100 ms (docs/studio.md).
+inline constexpr double kStallTargetMs = 100.0;
+// How many blocked intervals a GUI test allows while it measures: a stall counts one interval per
+// full kStallTargetMs it lasts (a 250 ms stall counts 2), summed over the measurement. Generous on
+// purpose: the GUI tests run alone (RUN_SERIAL) but the machine is shared, and a preempted process
+// misses a tick now and then; work that belongs on a worker thread (a training step or a video
+// decode on the GUI thread) blocks the loop in every step and spends the budget at once, as does a
+// single stall of half a second. The measured worst stall of each test is printed (qInfo) and
+// listed per page in docs/testing.md.
+inline constexpr int kStallBudget = 4;
 
-// Ticks every 5 ms on the thread it lives on; the longest gap between ticks, minus the period, is
-// how long the event loop could not run.
+// Ticks every 5 ms on the thread it lives on; each gap between ticks, minus the period, is how long
+// the event loop could not run (a stall).
 class StallWatchdog : public QObject {
   Q_OBJECT
  public:
@@ -36,6 +40,12 @@ class StallWatchdog : public QObject {
   void stop();
   double longestStallMs() const { return longestMs_; }
   int ticks() const { return ticks_; }
+  // Blocked intervals over the target: sum over stalls of floor(stall / kStallTargetMs).
+  int blockedIntervals() const { return blocked_; }
+  // Whether blockedIntervals() is within kStallBudget.
+  bool withinBudget() const { return blocked_ <= kStallBudget; }
+  // "longest stall X ms, N blocked intervals of 100 ms (budget B) over T ticks", for messages.
+  QString summary() const;
 
  private:
   QTimer timer_;
@@ -43,6 +53,7 @@ class StallWatchdog : public QObject {
   qint64 lastMs_ = -1;
   double longestMs_ = 0.0;
   int ticks_ = 0;
+  int blocked_ = 0;
 };
 
 // Runs the event loop until done() is true or timeoutMs passes; returns done().

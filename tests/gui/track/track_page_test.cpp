@@ -123,10 +123,8 @@ class TrackPageTest : public QObject {
     QVERIFY(page_->isBusy());
     QVERIFY(waitForJob());
     watchdog.stop();
-    qInfo("tracking: longest GUI-thread stall %.1f ms over %d ticks", watchdog.longestStallMs(),
-          watchdog.ticks());
-    QVERIFY2(watchdog.longestStallMs() < test::kStallBoundMs,
-             qPrintable(QString("stall %1 ms").arg(watchdog.longestStallMs())));
+    qInfo("tracking: GUI thread %s", qPrintable(watchdog.summary()));
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
     const TrackTable& rows = page_->session().track();
     QCOMPARE(static_cast<int>(rows.rows.size()), kFrames);
     int succeeded = 0;
@@ -152,16 +150,13 @@ class TrackPageTest : public QObject {
       QTest::qWait(10);
     }
     watchdog.stop();
-    qInfo("review: patch overlay search at most %.1f ms, decode at most %.1f ms, stall %.1f ms",
-          page_->longestOverlayMs(), page_->longestDecodeMs(), watchdog.longestStallMs());
+    qInfo("review: patch overlay search at most %.1f ms, decode at most %.1f ms; GUI thread %s",
+          page_->longestOverlayMs(), page_->longestDecodeMs(), qPrintable(watchdog.summary()));
     QVERIFY(page_->longestOverlayMs() > 0.0);  // the patches were drawn
     // The page is built for < 20 ms per frame on the GUI thread (typically 0.5 ms overlay, 2 ms
-    // decode here, printed above); the assertions only catch work that belongs elsewhere.
-    QVERIFY2(page_->longestOverlayMs() < test::kStallBoundMs,
-             qPrintable(QString("overlay %1 ms").arg(page_->longestOverlayMs())));
-    QVERIFY2(page_->longestDecodeMs() < test::kStallBoundMs,
-             qPrintable(QString("decode %1 ms").arg(page_->longestDecodeMs())));
-    QVERIFY(watchdog.longestStallMs() < test::kStallBoundMs);
+    // decode here, printed above). Both run on the GUI thread inside the watched loop: an overlay
+    // or decode over 100 ms a frame spends the stall budget within a few frames.
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
     // The patch shortcut toggles them.
     auto* patches = page_->findChild<QCheckBox*>("patchesCheck");
     QVERIFY(patches->isChecked());
@@ -281,8 +276,8 @@ class TrackPageTest : public QObject {
     QVERIFY(page_->isBusy());
     QVERIFY(waitForJob());
     watchdog.stop();
-    qInfo("re-tracking: longest GUI-thread stall %.1f ms", watchdog.longestStallMs());
-    QVERIFY(watchdog.longestStallMs() < test::kStallBoundMs);
+    qInfo("re-tracking: GUI thread %s", qPrintable(watchdog.summary()));
+    QVERIFY2(watchdog.withinBudget(), qPrintable(watchdog.summary()));
     const TrackTable& track = page_->session().track();
     QCOMPARE(static_cast<int>(track.rows.size()), kFrames);
     for (int f = 0; f < kFrames; ++f) QCOMPARE(track.rows[static_cast<std::size_t>(f)].frame, f);
