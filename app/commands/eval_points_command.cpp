@@ -16,6 +16,8 @@
 #include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"
 #include "core/eval/yaw_bands.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/model/model_file.hpp"
 #include "core/scheme/scheme.hpp"
 
 namespace clm3d::cli {
@@ -38,6 +40,7 @@ struct EvalPointsArgs {
   bool roc = false;
   double wrongAbove = 0.15;
   fs::path poses;
+  fs::path model;
   std::string yawBands = "0,30,60,90";
 };
 
@@ -59,7 +62,7 @@ void runEvalPoints(const EvalPointsArgs& args) {
   if (files && args.roc) {
     throw CLI::ValidationError("--roc", "the confidence ROC goes with --truth-dir");
   }
-  if (files && !args.poses.empty()) {
+  if (files && (!args.poses.empty() || !args.model.empty())) {
     throw CLI::ValidationError("--poses", "the yaw-band table goes with --truth-dir");
   }
   if (files && !args.csv.empty()) {
@@ -81,8 +84,12 @@ void runEvalPoints(const EvalPointsArgs& args) {
     if (!args.poses.empty()) {
       addYawBands(report, yawsByStem(report, readPoseCsv(args.poses)), edges,
                   "yaw from " + args.poses.string());
+    } else if (!args.model.empty()) {
+      addYawBands(report, yawsFromModel(report, loadModel(args.model), kDefaultVerticalFovDeg),
+                  edges, "yaw of " + args.model.string() + " fitted to the truth's points");
     } else if (!args.json) {
-      std::cout << "yaw bands: skipped (give --poses F.csv with columns image,yaw_deg)\n";
+      std::cout << "yaw bands: skipped (give --poses F.csv with columns image,yaw_deg, or "
+                   "--model M to fit the model to each truth)\n";
     }
     std::cout << (args.json ? formatPointFolderJson(report) : formatPointFolderText(report));
     auto& notes = args.json ? std::cerr : std::cout;
@@ -163,6 +170,9 @@ void addEvalPointsCommand(CLI::App& root) {
   command->add_option("--poses", args->poses,
                       "With --truth-dir: CSV with columns image,yaw_deg (e.g. AFLW's index.csv); "
                       "adds the per-|yaw|-band table");
+  command->add_option("--model", args->model,
+                      "With --truth-dir and no --poses: each truth's yaw is that of this model "
+                      "fitted to its points (the model's scheme must be --scheme)");
   command
       ->add_option("--yaw-bands", args->yawBands,
                    "Edges of the |yaw| bands in degrees, ascending, e.g. 0,45,90")

@@ -1,5 +1,6 @@
 #include "core/eval/yaw_bands.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -8,7 +9,10 @@
 #include "core/common/csv_cell.hpp"
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
+#include "core/detect/initialisation.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/geometry/pose.hpp"
 
 namespace clm3d {
 namespace {
@@ -110,6 +114,41 @@ std::vector<double> yawsByStem(const PointFolderReport& report,
   for (const std::string& stem : report.stems) {
     const auto it = poses.find(stem);
     yaws.push_back(it != poses.end() ? it->second : std::numeric_limits<double>::quiet_NaN());
+  }
+  return yaws;
+}
+
+std::vector<double> yawsFromModel(const PointFolderReport& report, const ClmModel& model,
+                                  double verticalFovDeg) {
+  const int n = model.shape.pointCount();
+  if (!report.truths.empty() && report.truths.front().size() != n) {
+    throw InputError("the model's scheme " + model.scheme().name() + " has " + std::to_string(n) +
+                     " points, the truths (scheme " + report.schemeName + ") " +
+                     std::to_string(report.truths.front().size()));
+  }
+  std::vector<double> yaws;
+  for (const LandmarkSet& truth : report.truths) {
+    Eigen::Matrix2Xd points = Eigen::Matrix2Xd::Zero(2, n);
+    std::vector<bool> present(static_cast<std::size_t>(n), false);
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector2d high = -low;
+    for (int i = 0; i < n; ++i) {
+      if (!truth.has(i)) continue;
+      points.col(i) = truth.point(i).head<2>();
+      present[static_cast<std::size_t>(i)] = true;
+      low = low.cwiseMin(points.col(i));
+      high = high.cwiseMax(points.col(i));
+    }
+    if (truth.presentCount() < 4) {
+      yaws.push_back(std::numeric_limits<double>::quiet_NaN());
+      continue;
+    }
+    const Eigen::Vector2d centre = 0.5 * (low + high);
+    const int width = std::max(16, static_cast<int>(std::ceil(2.0 * centre.x())));
+    const int height = std::max(16, static_cast<int>(std::ceil(2.0 * centre.y())));
+    const Camera camera = Camera::fromVerticalFov(width, height, verticalFovDeg);
+    const FitState state = stateFromPoints(model, camera, points, present);
+    yaws.push_back(degrees(state.pose.yaw));
   }
   return yaws;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/eval/point_folder_error.hpp"
+#include "core/model/clm_model.hpp"
 
 namespace clm3d {
 
@@ -33,6 +34,14 @@ int yawBandOf(double yawDeg, const std::vector<double>& edges);
 // Per report image the yaw of its stem in `poses`, NaN where the CSV does not list it.
 std::vector<double> yawsByStem(const PointFolderReport& report,
                                const std::map<std::string, double>& poses);
+
+// Per report image the yaw in degrees of the model's 3D shape fitted to the truth's present points
+// (stateFromPoints), NaN for a truth with fewer than 4 present points. The photo is not read: the
+// camera has the vertical field of view verticalFovDeg over an image twice the distance from the
+// origin to the centre of the truth's box, i.e. the face at the image centre. InputError when the
+// model's scheme does not have the truths' point count.
+std::vector<double> yawsFromModel(const PointFolderReport& report, const ClmModel& model,
+                                  double verticalFovDeg);
 
 // Sets report.yawDeg (one per image), bandEdges and yawSource, and fills every method's bands:
 // a face is fitted when it has a prediction not marked rejected; the mean errors are over the

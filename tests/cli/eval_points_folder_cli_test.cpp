@@ -9,8 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "core/detect/initialisation.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/geometry/pose.hpp"
+#include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/scheme/scheme.hpp"
+#include "tests/support/fit_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -133,6 +138,40 @@ TEST(EvalPointsFolderCli, YawBandsFromAPosesCsv) {
                " --poses " + poses.string() + " --yaw-bands 60,30");
   EXPECT_NE(bad.exitCode, 0);
   EXPECT_TRUE(test::contains(bad.output, "yaw band edges '60,30'")) << bad.output;
+}
+
+// The yaw of each truth from the model fitted to its points: three truths projected from the
+// fixture model at known yaws land in their bands; the band table says where the yaws came from.
+TEST(EvalPointsFolderCli, YawBandsFromTheModelFittedToTheTruths) {
+  test::TempDir dir;
+  const ClmModel& model = test::fitTestModel();
+  const fs::path modelFile = dir / "model.clm3d";
+  saveModel(model, modelFile);
+  const fs::path truth = dir / "truth";
+  fs::create_directories(truth);
+  const Camera camera = Camera::fromVerticalFov(640, 480, kDefaultVerticalFovDeg);
+  const std::vector<std::pair<std::string, double>> faces{
+      {"front", 5.0}, {"half", 45.0}, {"side", -70.0}};
+  for (const auto& [stem, yaw] : faces) {
+    FitState state;
+    state.pose = Pose::fromDegrees(5.0, yaw, 0.0, {0.0, 0.0, -450.0}, 1.0);
+    state.shape = Eigen::VectorXd::Zero(model.shape.modeCount());
+    const Eigen::Matrix2Xd points = projectState(model, camera, state);
+    LandmarkSet set(25, 2);
+    for (int i = 0; i < 25; ++i) set.set(i, Eigen::Vector2d(points.col(i)));
+    writeLandmarks(truth / (stem + ".pts"), set, Scheme::thesis25());
+  }
+  const auto result = runClm3d("eval-points --truth-dir " + truth.string() + " --pred-dir " +
+                               truth.string() + " --model " + modelFile.string() + " --json");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  const auto& bands = json["methods"][0]["bands"];
+  ASSERT_EQ(bands.size(), 3U);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(bands[k]["faces"], 1) << "band " << k << ": " << bands.dump();
+    EXPECT_EQ(bands[k]["fitted"], 1) << "band " << k;
+  }
+  EXPECT_TRUE(test::contains(json["yaw_source"].get<std::string>(), "fitted to the truth"));
 }
 
 TEST(EvalPointsFolderCli, ChosenPointsAndLabels) {
