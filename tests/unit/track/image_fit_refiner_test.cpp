@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <complex>
 #include <opencv2/core.hpp>
 #include <random>
 
@@ -40,9 +41,10 @@ using test::savePhoto;
 // A refiner whose output is known by construction, so that tests of who applies it need not call
 // the code under test for their expected points: one stage with no image weights and shape
 // weights -I, so that it moves the points' normalised shape onto its mean shape, i.e. replaces the
-// points with the mean shape placed on them by the least-squares similarity (Eigen's umeyama
-// below); from several starts (shifted and scaled copies whose mean is the start) the placements
-// average to the same. Its check scores every fit alike: probability 0.8.
+// points with the mean shape placed on them by the least-squares similarity (written out below
+// with complex numbers, independent of the project's own alignment); from several starts (shifted
+// and scaled copies whose mean is the start) the placements average to the same. Its check scores
+// every fit alike: probability 0.8.
 constexpr double kKnownCheckProbability = 0.8;
 DescentRefiner knownRefiner() {
   DescentRefiner refiner;
@@ -71,9 +73,25 @@ Eigen::Matrix2Xd placedMeanShape(const DescentRefiner& refiner, const Eigen::Mat
   Eigen::Matrix2Xd chosen(2, static_cast<Eigen::Index>(refiner.landmarks.size()));
   for (std::size_t i = 0; i < refiner.landmarks.size(); ++i)
     chosen.col(static_cast<Eigen::Index>(i)) = points.col(refiner.landmarks[i]);
-  const Eigen::Matrix3d transform = Eigen::umeyama(refiner.meanShape, chosen, true);
-  const Eigen::Matrix2Xd placed = (transform.topLeftCorner<2, 2>() * refiner.meanShape).colwise() +
-                                  Eigen::Vector2d(transform.topRightCorner<2, 1>());
+  // The similarity z -> a z + b minimising sum |a s_i + b - t_i|^2 over complex points: b moves
+  // the centroids together, a = sum conj(s_i - s) (t_i - t) / sum |s_i - s|^2.
+  const Eigen::Vector2d sourceMean = refiner.meanShape.rowwise().mean();
+  const Eigen::Vector2d targetMean = chosen.rowwise().mean();
+  std::complex<double> numerator = 0.0;
+  double denominator = 0.0;
+  for (Eigen::Index i = 0; i < chosen.cols(); ++i) {
+    const Eigen::Vector2d a = refiner.meanShape.col(i) - sourceMean;
+    const Eigen::Vector2d b = chosen.col(i) - targetMean;
+    numerator += std::conj(std::complex<double>(a.x(), a.y())) * std::complex<double>(b.x(), b.y());
+    denominator += a.squaredNorm();
+  }
+  const std::complex<double> factor = numerator / denominator;
+  Eigen::Matrix2Xd placed(2, chosen.cols());
+  for (Eigen::Index i = 0; i < chosen.cols(); ++i) {
+    const Eigen::Vector2d a = refiner.meanShape.col(i) - sourceMean;
+    const std::complex<double> z = factor * std::complex<double>(a.x(), a.y());
+    placed.col(i) = targetMean + Eigen::Vector2d(z.real(), z.imag());
+  }
   Eigen::Matrix2Xd out = points;
   for (std::size_t i = 0; i < refiner.landmarks.size(); ++i)
     out.col(refiner.landmarks[i]) = placed.col(static_cast<Eigen::Index>(i));
