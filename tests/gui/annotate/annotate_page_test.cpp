@@ -162,12 +162,13 @@ class AnnotatePageTest : public QObject {
     QCOMPARE(page->undoStack()->count(), 6);
     qInfo("loading a scan: longest GUI stall %.1f ms, at most %d blocked intervals of %.0f ms",
           longestLoadStallMs_, mostLoadBlockedIntervals_, test::kStallTargetMs);
-    // Known: opening a scan blocks the GUI thread 0.8-1.8 s (811 and 1807 ms in two runs, 13 and
-    // 25 blocked intervals, measured for issue 30; before, this figure was printed only). Expected
-    // to fail until the load moves off the GUI thread; an unexpected pass (XPASS) fails the test,
-    // so the mark is removed when it is fixed.
-    QEXPECT_FAIL("", "opening a scan stalls the GUI thread ~1.8 s (issue 30)", Continue);
-    QVERIFY2(mostLoadBlockedIntervals_ <= test::kStallBudget,
+    // Known: opening a scan blocks the GUI thread 0.4-1.8 s (387, 811 and 1807 ms in three runs,
+    // 4, 13 and 25 blocked intervals, measured for issue 30), far beyond the 100 ms target until
+    // the load moves off the GUI thread. An expected-failure mark passed unexpectedly on the faster
+    // run, so the load is held to its own budget instead, above what it measures today: a load that
+    // blocks longer than that fails.
+    constexpr int kScanLoadStallBudget = 35;  // intervals of kStallTargetMs (3.5 s)
+    QVERIFY2(mostLoadBlockedIntervals_ <= kScanLoadStallBudget,
              qPrintable(QString("%1 blocked intervals").arg(mostLoadBlockedIntervals_)));
     QElapsedTimer clock;
     clock.start();
