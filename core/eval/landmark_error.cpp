@@ -7,6 +7,7 @@
 
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
+#include "core/eval/face_box.hpp"
 #include "core/eval/statistics.hpp"
 
 namespace clm3d {
@@ -14,19 +15,6 @@ namespace {
 
 bool hasPoint(const Eigen::Matrix2Xd& points, int i) {
   return std::isfinite(points(0, i)) && std::isfinite(points(1, i));
-}
-
-// sqrt(width x height) of the box around the present points; 0 for fewer than two or a flat box.
-double pointBoxSize(const Eigen::Matrix2Xd& points) {
-  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d high = -low;
-  for (int i = 0; i < static_cast<int>(points.cols()); ++i) {
-    if (!hasPoint(points, i)) continue;
-    low = low.cwiseMin(points.col(i));
-    high = high.cwiseMax(points.col(i));
-  }
-  if (!(high.x() > low.x()) || !(high.y() > low.y())) return 0.0;
-  return std::sqrt((high.x() - low.x()) * (high.y() - low.y()));
 }
 
 // Error of one truth frame against its prediction row (nullptr when the prediction lacks it).
@@ -44,7 +32,7 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
   if (hasPoint(truth.points, first) && hasPoint(truth.points, second)) {
     result.interOcular = (truth.points.col(first) - truth.points.col(second)).norm();
   }
-  result.faceSize = pointBoxSize(truth.points);
+  result.faceSize = faceBoxSize(truth.points);
   result.normalised = result.interOcular > 1e-9;
   result.predicted = prediction != nullptr;
   result.success = prediction != nullptr && prediction->success;

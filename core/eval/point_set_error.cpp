@@ -11,6 +11,7 @@
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/eval/face_box.hpp"
 #include "core/scheme/landmark_file.hpp"
 
 namespace clm3d {
@@ -108,17 +109,12 @@ PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& pred
   result.selected = static_cast<int>(points.size());
   double sum = 0.0;
   result.maxError = nan;
-  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d high = -low;
-  int boxPoints = 0;
+  Eigen::Matrix2Xd present = Eigen::Matrix2Xd::Constant(2, scheme.size(), nan);
   for (int i = 0; i < scheme.size(); ++i) {
-    if (!truth.has(i)) continue;
-    low = low.cwiseMin(xy(truth, i));
-    high = high.cwiseMax(xy(truth, i));
-    ++boxPoints;
+    if (truth.has(i)) present.col(i) = xy(truth, i);
   }
-  const double area = boxPoints >= 2 ? (high - low).prod() : 0.0;
-  result.boxSize = area > 0.0 ? std::sqrt(area) : nan;
+  const double box = faceBoxSize(present);
+  result.boxSize = box > 0.0 ? box : nan;
   for (const int i : points) {
     if (i < 0 || i >= scheme.size()) {
       throw std::invalid_argument("selected point index " + std::to_string(i) + " out of range");
