@@ -10,6 +10,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
+#include <string>
 
 #include "app/commands/cli_progress.hpp"
 #include "app/commands/commands.hpp"
@@ -22,6 +24,7 @@
 #include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/fit_overlay.hpp"
+#include "core/track/multi_face_tracker.hpp"
 #include "core/track/track_table_writer.hpp"
 #include "core/track/tracker.hpp"
 #include "core/video/video_reader.hpp"
@@ -34,11 +37,29 @@ namespace fs = std::filesystem;
 
 struct TrackArgs {
   fs::path model, video, out, overlay, init;
-  FitOptions fit;  // every tracker option (core/track/tracker_options.hpp)
+  FitOptions fit;           // every tracker option (core/track/tracker_options.hpp)
+  std::string faces = "1";  // --faces: "all" or a count
   bool quiet = false;
 };
 
+// --faces: 1 = today's single-face track (no face column); "all" = 0 for MultiFaceSettings.
+int parseFaces(const std::string& text) {
+  if (text == "all") return 0;
+  try {
+    std::size_t used = 0;
+    const int count = std::stoi(text, &used);
+    if (used == text.size() && count >= 1) return count;
+  } catch (const std::exception&) {
+    // Reported below.
+  }
+  throw InputError("--faces: expected all or a count of at least 1, got \"" + text + "\"");
+}
+
 void runTrack(const TrackArgs& args) {
+  const int faces = parseFaces(args.faces);
+  if (faces != 1 && !args.init.empty()) {
+    throw InputError("--init starts one face's track: use it without --faces");
+  }
   const ClmModel model = loadModel(args.model);
   const Scheme scheme = model.scheme();
   const TrackerSettings& settings = args.fit.tracker;
@@ -69,19 +90,39 @@ void runTrack(const TrackArgs& args) {
     drawFitOverlay(drawn, step, tracker.fitter(), scheme);
     overlay->write(drawn);
   };
+  const auto perFrameFaces = [&](const cv::Mat& frame, const std::vector<FaceStep>& steps,
+                                 MultiFaceTracker& tracker) {
+    if (!overlay) return;
+    cv::Mat drawn = frame.clone();
+    for (const FaceStep& face : steps) {
+      drawFitOverlay(drawn, face.step, tracker.tracker(face.face).fitter(), scheme);
+    }
+    overlay->write(drawn);
+  };
   TrackSummary summary;
+  std::set<std::string> ids;  // the face ids written (--faces)
   bool cancelled = false;
   // Rows are written as they are made (memory stays flat over a long video) into a temporary file
   // renamed into place at the end; Ctrl-C keeps the frames tracked so far.
   writeFileAtomically(args.out, [&](std::ostream& out) {
-    TrackTableWriter writer(out, model.shape.pointCount());
+    TrackTableWriter writer(
+        out, model.shape.pointCount(),
+        faces == 1 ? std::vector<std::string>{} : std::vector<std::string>{"face"});
     const auto onRow = [&](TrackRow&& row) {
+      if (!row.extraCells.empty()) ids.insert(row.extraCells.front());
       writer.write(row);
       ++written;
     };
     try {
-      summary = trackVideo(args.video, model, settings, onRow, perFrame, progress.callback(),
-                           &interrupt.token(), initial);
+      if (faces == 1) {
+        summary = trackVideo(args.video, model, settings, onRow, perFrame, progress.callback(),
+                             &interrupt.token(), initial);
+      } else {
+        MultiFaceSettings multi;
+        multi.maxFaces = faces;
+        summary = trackVideoFaces(args.video, model, settings, multi, onRow, perFrameFaces,
+                                  progress.callback(), &interrupt.token());
+      }
     } catch (const Cancelled&) {
       cancelled = true;
     }
@@ -102,9 +143,15 @@ void runTrack(const TrackArgs& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   std::cout << std::fixed << std::setprecision(1) << "tracked " << summary.frames << " frames of "
-            << args.video.string() << " in " << seconds << " s: " << summary.succeeded
-            << " succeeded (" << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0)
-            << "%), " << summary.detections << " detections\n"
+            << args.video.string() << " in " << seconds << " s: ";
+  if (faces == 1) {
+    std::cout << summary.succeeded << " succeeded ("
+              << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0) << "%), ";
+  } else {
+    std::cout << ids.size() << (ids.size() == 1 ? " face, " : " faces, ") << summary.succeeded
+              << " face-frames succeeded, ";
+  }
+  std::cout << summary.detections << " detections\n"
             << std::setprecision(2) << "fit time per frame: median " << summary.medianMilliseconds()
             << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
             << resolveOptimiser(settings.fit.optimiser, model) << ", "
@@ -130,6 +177,11 @@ void addTrackCommand(CLI::App& root) {
   command->add_option("--overlay", args->overlay,
                       "also write the video with the landmarks and patches drawn (.mp4, .avi)");
   command->add_option("--init", args->init, "start the first frame from these points");
+  command
+      ->add_option("--faces", args->faces,
+                   "faces to track: 1 (the default: one face, no face column), a count, or "
+                   "all; each face gets a stable id in the tracks' face column")
+      ->default_str("1");
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   addFitOptions(*command, args->fit, OptionCommand::Track);
   command->callback([args] { runTrack(*args); });

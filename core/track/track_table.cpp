@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <ostream>
 #include <string_view>
 #include <system_error>
@@ -284,17 +285,21 @@ std::string formatTrackTable(const TrackTable& table) {
   return out;
 }
 
-TrackTableWriter::TrackTableWriter(std::ostream& out, int landmarkCount)
-    : out_(&out), landmarkCount_(landmarkCount) {
+TrackTableWriter::TrackTableWriter(std::ostream& out, int landmarkCount,
+                                   std::vector<std::string> extraColumns)
+    : out_(&out), landmarkCount_(landmarkCount), extraColumns_(std::move(extraColumns)) {
   if (landmarkCount < 0) throw Error("track table: negative landmark count");
+  TrackTable columns;
+  columns.extraColumns = extraColumns_;
+  checkExtraColumns(columns);
   std::string header;
-  appendTrackHeader(header, landmarkCount_, true, true, false, {});
+  appendTrackHeader(header, landmarkCount_, true, true, false, extraColumns_);
   out_->write(header.data(), static_cast<std::streamsize>(header.size()));
 }
 
 void TrackTableWriter::write(const TrackRow& row) {
   line_.clear();
-  appendTrackRow(line_, row, landmarkCount_, true, true, false, {});
+  appendTrackRow(line_, row, landmarkCount_, true, true, false, extraColumns_);
   out_->write(line_.data(), static_cast<std::streamsize>(line_.size()));
   ++rows_;
 }
@@ -422,7 +427,10 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
       table.extraColumns.push_back(name);
     }
   }
-  std::unordered_map<int, int> lineOfFrame;
+  // A frame appears once, or once per face in a multi-face table (a `face` column: clm3d track
+  // --faces, docs/tracks-csv.md).
+  const int faceColumn = find("face");
+  std::map<std::pair<int, std::string>, int> lineOfFrame;
   for (; next < lines.size(); ++next) {
     const auto& line = lines[next];
     if (text::trim(line.text).empty()) continue;
@@ -436,9 +444,12 @@ TrackTable parseTrackTable(const std::string& input, const std::string& sourceNa
     const RowReader reader(sourceName, line.number, cells, header);
     TrackRow row;
     row.frame = reader.integer(frameColumn, 0);
-    if (const auto [it, inserted] = lineOfFrame.emplace(row.frame, line.number); !inserted) {
-      reader.fail(frameColumn, "frame " + std::to_string(row.frame) + " already appears on line " +
-                                   std::to_string(it->second));
+    const std::string face = faceColumn >= 0 ? std::string(reader.cell(faceColumn)) : std::string();
+    if (const auto [it, inserted] = lineOfFrame.emplace(std::pair(row.frame, face), line.number);
+        !inserted) {
+      reader.fail(frameColumn, "frame " + std::to_string(row.frame) +
+                                   (face.empty() ? "" : " of face " + face) +
+                                   " already appears on line " + std::to_string(it->second));
     }
     row.success = reader.flag(successColumn);
     row.timestamp = timestampColumn >= 0 ? reader.number(timestampColumn)

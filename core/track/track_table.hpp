@@ -71,7 +71,9 @@ std::string formatTrackTable(const TrackTable& table);
 // every row's has n entries; the same for conf_k and landmarkConfidence). Throws InputError naming
 // the file, the line and the column for a missing column, a malformed number or a wrong cell count.
 // Columns the table does not use come back as extraColumns (header order, named ones only) with
-// their cells. A status cell other than empty or "unreadable" is an InputError.
+// their cells. A frame appears on one line, or on one line per face when there is a `face` column
+// (clm3d track --faces); a repeat is an InputError naming both lines. A status cell other than
+// empty or "unreadable" is an InputError.
 TrackTable readTrackTable(const std::filesystem::path& path);
 TrackTable parseTrackTable(const std::string& text, const std::string& sourceName);
 

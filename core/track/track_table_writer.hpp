@@ -7,26 +7,31 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "core/track/track_table.hpp"
 
 namespace clm3d {
 
 // The columns are fixed when the writer is made: the tracker's, with visible_k and conf_k (empty
-// cells for a row without them), no extra columns. That is what formatTrackTable writes for a
-// table in which some row has visibility and landmark confidences (every tracked video with a
-// fitted frame); for a video without one it adds those columns, empty. `out` must outlive it.
+// cells for a row without them), then `extraColumns` (a multi-face track's `face`). That is what
+// formatTrackTable writes for a table in which some row has visibility and landmark confidences
+// (every tracked video with a fitted frame); for a video without one it adds those columns, empty.
+// `out` must outlive it.
 class TrackTableWriter {
  public:
-  TrackTableWriter(std::ostream& out, int landmarkCount);  // writes the header
+  // Writes the header.
+  TrackTableWriter(std::ostream& out, int landmarkCount,
+                   std::vector<std::string> extraColumns = {});
   // Error (as formatTrackTable) for a row whose point, visibility or confidence count is not the
-  // landmark count, or with extra cells.
+  // landmark count, or with more extra cells than there are extra columns.
   void write(const TrackRow& row);
   std::size_t rows() const { return rows_; }
 
  private:
   std::ostream* out_;
   int landmarkCount_;
+  std::vector<std::string> extraColumns_;
   std::size_t rows_ = 0;
   std::string line_;
 };

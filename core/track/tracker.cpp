@@ -240,8 +240,8 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     }
   }
   if (!fromPrevious || step.failure != TrackFailure::None) {
-    const std::vector<FaceBox> faces =
-        lastFace_ ? preferFacesAt(detector().detect(frame), *lastFace_) : detector().detect(frame);
+    std::vector<FaceBox> faces = faceSource_ ? faceSource_(frame) : detector().detect(frame);
+    if (lastFace_) faces = preferFacesAt(std::move(faces), *lastFace_);
     if (!faces.empty()) {
       step.detected = true;
       // The next face while the fit fails (TrackerSettings::facesTried); the last one's stands.
@@ -368,13 +368,12 @@ TrackRow unreadableRow(int frame, double fps, int points) {
 
 }  // namespace
 
-TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
-                                  int expectedFrames, std::string_view stage,
-                                  const PerFrame& perFrame, const ProgressCallback& progress,
-                                  const CancelToken* cancel) {
+TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep& trackFrame,
+                                const TrackRowSink& onRow, int expectedFrames,
+                                std::string_view stage, const ProgressCallback& progress,
+                                const CancelToken* cancel) {
   TrackSummary summary;
   summary.declaredFrames = reader.frameCount();
-  const int points = tracker.fitter().model().shape.pointCount();
   const double fps = reader.fps();  // read here: the decoder thread owns the reader below
   const auto skip = [&](int first, int count) {
     summary.unreadable.push_back({first, count});
@@ -391,13 +390,8 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const T
       if (frame == nullptr) break;
       if (frame->skippedBefore > 0) skip(frame->index - frame->skippedBefore, frame->skippedBefore);
       last = frame->index;
-      TrackStep step = tracker.track(frame->image, frame->index, frame->timestamp);
       ++summary.frames;
-      if (step.row.success) ++summary.succeeded;
-      if (step.detected) ++summary.detections;
-      if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
-      if (perFrame) perFrame(frame->image, step, tracker);
-      onRow(std::move(step.row));
+      trackFrame(frame->image, frame->index, frame->timestamp, summary);
       if (progress && expectedFrames > 0) {
         progress(std::min(1.0, static_cast<double>(summary.frames) / expectedFrames), stage);
       }
@@ -408,6 +402,27 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const T
   }
   if (progress) progress(1.0, stage);
   return summary;
+}
+
+void countStep(const TrackStep& step, TrackSummary& summary) {
+  if (step.row.success) ++summary.succeeded;
+  if (step.detected) ++summary.detections;
+  if (step.fit) summary.fitMilliseconds.push_back(step.fitMilliseconds);
+}
+
+TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
+                                  int expectedFrames, std::string_view stage,
+                                  const PerFrame& perFrame, const ProgressCallback& progress,
+                                  const CancelToken* cancel) {
+  const auto trackFrame = [&](const cv::Mat& image, int index, double timestamp,
+                              TrackSummary& summary) {
+    TrackStep step = tracker.track(image, index, timestamp);
+    countStep(step, summary);
+    if (perFrame) perFrame(image, step, tracker);
+    onRow(std::move(step.row));
+  };
+  return trackDecodedFrames(reader, tracker.fitter().model().shape.pointCount(), trackFrame, onRow,
+                            expectedFrames, stage, progress, cancel);
 }
 
 TrackSummary trackVideo(

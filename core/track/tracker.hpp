@@ -158,6 +158,16 @@ class Tracker {
   // Where the next frame's search starts: the last state, its pose moved on by the motion
   // prediction once two consecutive frames were tracked. Only valid while tracking (not lost).
   FitState nextStart() const;
+  // Whether the next frame continues from a state (false: it starts from a detection).
+  bool tracking() const { return state_.has_value(); }
+  // The centre of the last tracked frame's points (kept while the track is lost), if any.
+  const std::optional<cv::Point2d>& lastFace() const { return lastFace_; }
+
+  // Where a frame that needs a detection gets its faces, best first. Unset: the tracker's own
+  // detector over the whole frame. MultiFaceTracker sets it to hand each face's tracker only the
+  // faces no other face's tracker holds. The source must outlive the tracker's use of it.
+  using FaceSource = std::function<std::vector<FaceBox>(const cv::Mat& frame)>;
+  void setFaceSource(FaceSource source) { faceSource_ = std::move(source); }
 
   Fitter& fitter() { return fitter_; }
   const TrackerSettings& settings() const { return settings_; }
@@ -185,6 +195,7 @@ class Tracker {
   Fitter fitter_;
   bool usesExperts_ = false;
   std::unique_ptr<FaceDetector> detector_;
+  FaceSource faceSource_;
   std::optional<FitState> state_;
   std::optional<FitState> before_;  // the successful frame before state_'s, for the prediction
   int view_ = -1;
@@ -240,6 +251,20 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const T
                                   int expectedFrames, std::string_view stage,
                                   const PerFrame& perFrame, const ProgressCallback& progress,
                                   const CancelToken* cancel);
+
+// The loop under trackRemainingFrames and trackVideoFaces (core/track/multi_face_tracker.hpp):
+// decodes the reader's remaining frames on a thread of their own, hands each to `trackFrame` in
+// frame order (it tracks the frame, gives its rows to `onRow` and counts them in the summary;
+// TrackSummary::frames is already counted), writes an unreadable row (`points` NaN columns) for
+// each frame the video declares but could not be decoded, reports progress and stops on `cancel`.
+using FrameStep =
+    std::function<void(const cv::Mat& image, int index, double timestamp, TrackSummary& summary)>;
+TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep& trackFrame,
+                                const TrackRowSink& onRow, int expectedFrames,
+                                std::string_view stage, const ProgressCallback& progress,
+                                const CancelToken* cancel);
+// Counts a tracked step in the summary: success, detection and fit time.
+void countStep(const TrackStep& step, TrackSummary& summary);
 
 // Tracks every frame of a video into `table` (rows in frame order). perFrame (optional) sees each
 // frame with its step, e.g. to draw the overlay. Progress stage "tracking". Throws InputError for

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
+#include "core/track/track_table_writer.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -311,6 +313,31 @@ TEST(TrackTable, BadInputsNameFileLineAndColumn) {
         << "input:\n"
         << c.text << "\nmessage: " << message << "\nexpected start: " << c.expected;
   }
+}
+
+// A multi-face table (clm3d track --faces) has a row per face and frame: a frame repeats with
+// another face, not with the same one; the writer streams the face column.
+TEST(TrackTable, AFaceColumnLetsAFrameRepeatOncePerFace) {
+  const std::string header = "frame,timestamp,success,confidence,view,x_1,y_1,face\n";
+  const TrackTable table = parseTrackTable(
+      header + "0,0,1,0.5,0,1,2,0\n0,0,1,0.5,0,5,6,1\n1,0,1,0.5,0,1,2,0\n", "t.csv");
+  ASSERT_EQ(table.rows.size(), 3u);
+  EXPECT_EQ(table.extraColumns, std::vector<std::string>{"face"});
+  EXPECT_EQ(table.rows[1].extraCells, std::vector<std::string>{"1"});
+  EXPECT_EQ(
+      parseError(header + "0,0,1,0.5,0,1,2,1\n0,0,1,0.5,0,5,6,1\n")
+          .rfind("tracks.csv:3: column frame: frame 0 of face 1 already appears on line 2", 0),
+      0u);
+
+  std::ostringstream out;
+  TrackTableWriter writer(out, 1, {"face"});
+  TrackRow row = table.rows[1];
+  writer.write(row);
+  const TrackTable back = parseTrackTable(out.str(), "w.csv");
+  ASSERT_EQ(back.rows.size(), 1u);
+  EXPECT_EQ(back.rows[0].extraCells, std::vector<std::string>{"1"});
+  row.extraCells = {"1", "2"};
+  EXPECT_THROW(writer.write(row), Error);
 }
 
 TEST(TrackTable, MissingFileIsAnInputErrorNamingIt) {
