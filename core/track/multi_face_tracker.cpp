@@ -137,8 +137,9 @@ std::vector<FaceStep> MultiFaceTracker::track(const cv::Mat& frame, int index, d
     const std::vector<FaceBox> boxes = detected(frame);
     for (const FaceBox& box : boxes) {
       if (multi_.maxFaces > 0 && live() >= multi_.maxFaces) break;
-      const bool taken = std::any_of(tracked.begin(), tracked.end(),
-                                     [&](const PlacedFace& p) { return boxHolds(box.box, p.centre); });
+      const bool taken = std::any_of(tracked.begin(), tracked.end(), [&](const PlacedFace& p) {
+        return boxHolds(box.box, p.centre);
+      });
       if (taken) continue;
       // The nearest lost face within reach of this one gets its id back.
       const cv::Point2d centre = boxCentre(box.box);
