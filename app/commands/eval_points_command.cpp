@@ -42,6 +42,7 @@ struct EvalPointsArgs {
   fs::path poses;
   fs::path model;
   std::string yawBands = "0,30,60,90";
+  fs::path bandTable;
 };
 
 void runEvalPoints(const EvalPointsArgs& args) {
@@ -64,6 +65,12 @@ void runEvalPoints(const EvalPointsArgs& args) {
   }
   if (files && (!args.poses.empty() || !args.model.empty())) {
     throw CLI::ValidationError("--poses", "the yaw-band table goes with --truth-dir");
+  }
+  if (folders && !args.bandTable.empty() && args.poses.empty() && args.model.empty()) {
+    throw CLI::ValidationError("--band-table", "the band table needs --poses or --model");
+  }
+  if (files && !args.bandTable.empty()) {
+    throw CLI::ValidationError("--band-table", "the band table goes with --truth-dir");
   }
   if (files && !args.csv.empty()) {
     throw CLI::ValidationError("--csv", "the per-image table goes with --truth-dir");
@@ -96,6 +103,10 @@ void runEvalPoints(const EvalPointsArgs& args) {
     if (!args.out.empty()) {
       writeTextAtomically(args.out, formatPointFolderJson(report));
       notes << "report: " << args.out.string() << '\n';
+    }
+    if (!args.bandTable.empty()) {
+      writeTextAtomically(args.bandTable, formatYawBandMarkdown(report));
+      notes << "band table: " << args.bandTable.string() << '\n';
     }
     if (!args.csv.empty()) {
       writeTextAtomically(args.csv, formatPointFolderCsv(report));
@@ -138,7 +149,9 @@ void addEvalPointsCommand(CLI::App& root) {
                                    "Predicted points (repeat to compare several)");
   auto* truthDir = command->add_option(
       "--truth-dir", args->truthDir,
-      "Folder of true points STEM.pts (68 or 25 points), one per image, instead of --truth");
+      "Folder of true points STEM.pts, one per image, instead of --truth: the scheme's points, or "
+      "for thesis25 68 (iBUG) or 21 (AFLW, invisible points \"-1 -1\") paired with its points; "
+      "the face box is that of each file's own points");
   auto* predDir = command->add_option(
       "--pred-dir", args->predictionDirs,
       "Folder of predictions STEM.pts, .ljson or .csv (repeat to compare methods); an image "
@@ -177,6 +190,9 @@ void addEvalPointsCommand(CLI::App& root) {
       ->add_option("--yaw-bands", args->yawBands,
                    "Edges of the |yaw| bands in degrees, ascending, e.g. 0,45,90")
       ->capture_default_str();
+  command->add_option("--band-table", args->bandTable,
+                      "With --poses or --model: write the band table as Markdown, the methods "
+                      "side by side (faces fitted and error / face box per |yaw| band)");
   command->add_option("--out", args->out, "Also write the JSON report to this file");
   command->callback([args] { runEvalPoints(*args); });
 }

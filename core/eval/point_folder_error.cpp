@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "core/common/csv_cell.hpp"
 #include "core/common/error.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/eval/scored_truth.hpp"
 #include "core/eval/statistics.hpp"
 #include "core/eval/yaw_bands.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -33,14 +35,6 @@ int presentSelected(const LandmarkSet& truth, const std::vector<int>& selected) 
   if (selected.empty()) return truth.presentCount();
   for (const int i : selected) count += truth.has(i) ? 1 : 0;
   return count;
-}
-
-// AFLW writes an invisible point as "-1 -1" (1-based), read as (-2, -2): such a point is missing.
-void dropInvisibleMarks(LandmarkSet& set, const fs::path& file) {
-  if (file.extension() != ".pts") return;
-  for (int i = 0; i < set.size(); ++i) {
-    if (set.has(i) && set.point(i).x() == -2.0 && set.point(i).y() == -2.0) set.setMissing(i);
-  }
 }
 
 // The stems that the folder's summary.csv (clm3d fit --images) marks "rejected"; none without a
@@ -101,17 +95,17 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
 
   const auto [a, b] = scheme.normalisationPair();
   std::vector<LandmarkSet> truths;
+  std::vector<double> boxSizes;
   for (const fs::path& file : truthFiles) {
-    LandmarkSet truth = readLandmarks(file, &scheme);
-    dropInvisibleMarks(truth, file);
-    if (!truth.has(a) || !truth.has(b) ||
-        !((truth.point(a) - truth.point(b)).head<2>().norm() > 1e-9)) {
-      throwInputError(file, "no usable normalisation pair (points " + std::to_string(a + 1) +
-                                " and " + std::to_string(b + 1) + " missing or coincident)");
-    }
+    ScoredTruth truth = readScoredTruth(file, scheme);
+    const bool eyes = truth.points.has(a) && truth.points.has(b) &&
+                      (truth.points.point(a) - truth.points.point(b)).head<2>().norm() > 1e-9;
     report.stems.push_back(file.stem().string());
-    report.truePoints.push_back(presentSelected(truth, selected));
-    truths.push_back(std::move(truth));
+    report.eyeNormalised.push_back(eyes);
+    report.truePoints.push_back(eyes ? presentSelected(truth.points, selected) : 0);
+    report.truthSchemes.push_back(truth.fileScheme);
+    boxSizes.push_back(truth.boxSize);
+    truths.push_back(std::move(truth.points));
   }
   report.truths = truths;
 
@@ -149,7 +143,7 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
       dropInvisibleMarks(prediction, *file);
       PointSetError result;
       try {
-        result = evaluatePointSet(truths[i], prediction, scheme, selected, threshold);
+        result = scorePointSet(truths[i], boxSizes[i], prediction, scheme, selected, threshold);
       } catch (const std::invalid_argument& e) {
         throwInputError(*file, e.what());
       }
@@ -183,6 +177,17 @@ std::string formatPointFolderText(const PointFolderReport& report) {
     for (const int i : report.selected) out << ' ' << i + 1;
   }
   out << ")\n";
+  std::map<std::string, int> schemes;
+  for (const std::string& name : report.truthSchemes) ++schemes[name];
+  if (schemes.size() != 1 || schemes.begin()->first != report.schemeName) {
+    out << "truths marked in:";
+    for (const auto& [name, count] : schemes) out << ' ' << name << " (" << count << ')';
+    out << "; the face box is that of each truth's own points\n";
+  }
+  const auto eyeless = std::count(report.eyeNormalised.begin(), report.eyeNormalised.end(), false);
+  if (eyeless > 0) {
+    out << eyeless << " truths without both eye centres: scored by the face box only\n";
+  }
   for (const PointFolderMethod& m : report.methods) {
     out << m.label << " (" << m.folder.string() << "): mean error " << formatErrorValue(m.meanError)
         << ", median " << formatErrorValue(m.medianError) << " over " << m.predicted << '/'

@@ -38,13 +38,15 @@ struct PointFolderMethod {
   std::vector<bool> rejected;
   // With yaw bands: one row per band (PointFolderReport::bandEdges).
   struct Band {
-    int faces = 0;              // truth images whose |yaw| falls in the band
-    int fitted = 0;             // of those, with a prediction that was not rejected
-    double meanBoxError = 0.0;  // over the fitted faces with a scored point; NaN if none
-    double meanEyeError = 0.0;  // the same, normalised by the eye distance
-    int truePoints = 0;         // selected points present in the band's truths
-    int foundPoints = 0;        // of those, fitted and within the threshold
-    double foundShare = 0.0;    // foundPoints / truePoints (unfitted faces count as not found)
+    int faces = 0;                // truth images whose |yaw| falls in the band
+    int fitted = 0;               // of those, with a prediction that was not rejected
+    double meanBoxError = 0.0;    // over the fitted faces with a scored point; NaN if none
+    double medianBoxError = 0.0;  // the median of the same
+    // Normalised by the eye distance, over the fitted faces whose truth has both eye centres.
+    double meanEyeError = 0.0;
+    int truePoints = 0;       // selected points present in the band's truths
+    int foundPoints = 0;      // of those, fitted and within the threshold
+    double foundShare = 0.0;  // foundPoints / truePoints (unfitted faces count as not found)
   };
   std::vector<Band> bands;
 };
@@ -53,10 +55,14 @@ struct PointFolderReport {
   std::string schemeName;
   std::filesystem::path truthFolder;
   double threshold = 0.18;
-  std::vector<int> selected;        // 0-based; empty = every point
-  std::vector<std::string> stems;   // the truth images, sorted
-  std::vector<int> truePoints;      // per image: selected points present in its truth
+  std::vector<int> selected;       // 0-based; empty = every point
+  std::vector<std::string> stems;  // the truth images, sorted
+  // Per image: selected points present in its truth, 0 for a truth without its normalisation pair
+  // (those are scored by the face box only and left out of the shares within the threshold).
+  std::vector<int> truePoints;
   std::vector<LandmarkSet> truths;  // per image, as read for the scheme (invisible points missing)
+  std::vector<bool> eyeNormalised;  // per image: the truth has its normalisation pair, apart
+  std::vector<std::string> truthSchemes;  // per image: the truth file's scheme (ScoredTruth)
   std::vector<PointFolderMethod> methods;
   // Yaw bands (core/eval/yaw_bands.hpp): per image the truth's yaw in degrees (NaN: unknown, in no
   // band), the |yaw| edges (bands [e0,e1), [e1,e2), ... the last closed) and where the yaws came
@@ -66,13 +72,15 @@ struct PointFolderReport {
   std::string yawSource;
 };
 
-// Truths are the folder's *.pts files (read for the scheme: a 68-point file is converted to
-// thesis25; a point written "-1 -1", AFLW's mark of an invisible point, is missing, in the truths
-// and in .pts predictions); predictions are STEM.pts, STEM.ljson or STEM.csv in each prediction
-// folder (the first that exists). labels: empty or one per folder. Throws InputError naming the
-// folder or file: a folder missing or without a .pts truth, a truth without a usable normalisation
-// pair, an unreadable prediction or one with the wrong point count, a label count that does not
-// match.
+// Truths are the folder's *.pts files, read with readScoredTruth (core/eval/scored_truth.hpp: for
+// thesis25 a 68-point file is converted and AFLW's 21 points are paired; a point written "-1 -1",
+// AFLW's mark of an invisible point, is missing, in the truths and in .pts predictions; the face
+// box is that of the file's own points); predictions are STEM.pts, STEM.ljson or STEM.csv in each
+// prediction folder (the first that exists). A truth without its normalisation pair (a profile
+// whose far eye is not marked) is scored by the face box only. labels: empty or one per folder.
+// Throws InputError naming the folder or file: a folder missing or without a .pts truth, a truth
+// the scheme cannot be paired with, an unreadable prediction or one with the wrong point count, a
+// label count that does not match.
 PointFolderReport evaluatePointFolders(const std::filesystem::path& truthFolder,
                                        const std::vector<std::filesystem::path>& predictionFolders,
                                        const std::vector<std::string>& labels, const Scheme& scheme,

@@ -85,7 +85,7 @@ std::vector<int> parsePointList(std::string_view text, const Scheme& scheme) {
 PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& prediction,
                                const Scheme& scheme, const std::vector<int>& selected,
                                double threshold) {
-  if (truth.size() != scheme.size() || prediction.size() != scheme.size()) {
+  if (truth.size() != scheme.size()) {
     throw std::invalid_argument("point sets of " + std::to_string(truth.size()) + " and " +
                                 std::to_string(prediction.size()) + " points, scheme " +
                                 scheme.name() + " has " + std::to_string(scheme.size()));
@@ -95,26 +95,42 @@ PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& pred
     throw std::invalid_argument("the truth lacks a normalisation point (" + scheme.id(a) + ", " +
                                 scheme.id(b) + ")");
   }
-  PointSetError result;
-  result.interOcular = (xy(truth, a) - xy(truth, b)).norm();
-  if (!(result.interOcular > 1e-9)) {
+  if (!((xy(truth, a) - xy(truth, b)).norm() > 1e-9)) {
     throw std::invalid_argument("the truth's normalisation points coincide");
   }
-  std::vector<int> points = selected;
-  if (points.empty()) {
-    for (int i = 0; i < scheme.size(); ++i) points.push_back(i);
-  }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  result.pointErrors.assign(scheme.size(), nan);
-  result.selected = static_cast<int>(points.size());
-  double sum = 0.0;
-  result.maxError = nan;
-  Eigen::Matrix2Xd present = Eigen::Matrix2Xd::Constant(2, scheme.size(), nan);
+  Eigen::Matrix2Xd present =
+      Eigen::Matrix2Xd::Constant(2, scheme.size(), std::numeric_limits<double>::quiet_NaN());
   for (int i = 0; i < scheme.size(); ++i) {
     if (truth.has(i)) present.col(i) = xy(truth, i);
   }
   const double box = faceBoxSize(present);
-  result.boxSize = box > 0.0 ? box : nan;
+  return scorePointSet(truth, box > 0.0 ? box : std::numeric_limits<double>::quiet_NaN(),
+                       prediction, scheme, selected, threshold);
+}
+
+PointSetError scorePointSet(const LandmarkSet& truth, double boxSize, const LandmarkSet& prediction,
+                            const Scheme& scheme, const std::vector<int>& selected,
+                            double threshold) {
+  if (truth.size() != scheme.size() || prediction.size() != scheme.size()) {
+    throw std::invalid_argument("point sets of " + std::to_string(truth.size()) + " and " +
+                                std::to_string(prediction.size()) + " points, scheme " +
+                                scheme.name() + " has " + std::to_string(scheme.size()));
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto [a, b] = scheme.normalisationPair();
+  PointSetError result;
+  result.interOcular = truth.has(a) && truth.has(b) ? (xy(truth, a) - xy(truth, b)).norm() : nan;
+  const bool eyes = result.interOcular > 1e-9;
+  if (!eyes) result.interOcular = nan;
+  std::vector<int> points = selected;
+  if (points.empty()) {
+    for (int i = 0; i < scheme.size(); ++i) points.push_back(i);
+  }
+  result.pointErrors.assign(scheme.size(), nan);
+  result.selected = static_cast<int>(points.size());
+  result.maxError = nan;
+  result.boxSize = boxSize > 0.0 ? boxSize : nan;
+  double pixelSum = 0.0;
   for (const int i : points) {
     if (i < 0 || i >= scheme.size()) {
       throw std::invalid_argument("selected point index " + std::to_string(i) + " out of range");
@@ -122,17 +138,18 @@ PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& pred
     if (!truth.has(i)) continue;
     ++result.truePoints;
     if (!prediction.has(i)) continue;
-    const double e = (xy(prediction, i) - xy(truth, i)).norm() / result.interOcular;
-    result.pointErrors[i] = e;
+    const double pixels = (xy(prediction, i) - xy(truth, i)).norm();
+    pixelSum += pixels;
     ++result.scoredPoints;
+    if (!eyes) continue;
+    const double e = pixels / result.interOcular;
+    result.pointErrors[i] = e;
     if (e <= threshold) ++result.foundPoints;
-    sum += e;
     result.maxError = std::isnan(result.maxError) ? e : std::max(result.maxError, e);
   }
-  result.error = result.scoredPoints > 0 ? sum / result.scoredPoints : nan;
-  // sum is in eye distances; the mean pixel error over the box size.
-  result.boxError =
-      result.scoredPoints > 0 ? result.error * result.interOcular / result.boxSize : nan;
+  const double meanPixels = result.scoredPoints > 0 ? pixelSum / result.scoredPoints : nan;
+  result.error = eyes ? meanPixels / result.interOcular : nan;
+  result.boxError = meanPixels / result.boxSize;
   return result;
 }
 

@@ -42,10 +42,20 @@ struct PointSetError {
 
 // Compares prediction with truth (both in the scheme's order and size) over the selected points
 // (0-based; empty = every point). The normalisation pair need not be selected, but must be present
-// and apart in the truth: otherwise std::invalid_argument. Also the box-normalised error.
+// and apart in the truth: otherwise std::invalid_argument. Also the box-normalised error, over the
+// box of the truth's present points.
 PointSetError evaluatePointSet(const LandmarkSet& truth, const LandmarkSet& prediction,
                                const Scheme& scheme, const std::vector<int>& selected,
                                double threshold = 0.18);
+
+// The same with the face box given (that of the truth file's own points, ScoredTruth::boxSize;
+// NaN: none) and a truth that may lack its normalisation pair (a turned AFLW face whose far eye is
+// not marked): then interOcular, error, maxError and pointErrors are NaN and no point is found,
+// while boxError is still the mean pixel error over the box. std::invalid_argument for sets not
+// of the scheme's size or a selected index out of range.
+PointSetError scorePointSet(const LandmarkSet& truth, double boxSize, const LandmarkSet& prediction,
+                            const Scheme& scheme, const std::vector<int>& selected,
+                            double threshold = 0.18);
 
 // Reads both files for the scheme (a 68-point file is converted to thesis25 when the scheme is
 // thesis25: docs/landmarks.md) and evaluates them. InputError names the file at fault: unreadable,

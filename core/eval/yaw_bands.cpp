@@ -11,6 +11,7 @@
 #include "core/common/number_text.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/eval/statistics.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/geometry/pose.hpp"
 
@@ -41,6 +42,11 @@ double parseFinite(const std::string& text) {
 // A band edge: whole degrees without decimals.
 std::string edgeText(double degrees) {
   return fixedText(degrees, degrees == std::round(degrees) ? 0 : 1, "");
+}
+
+// "97.0%", or "n/a" for no faces.
+std::string percentText(int part, int whole) {
+  return whole > 0 ? fixedText(100.0 * part / whole, 1, "") + "%" : std::string("n/a");
 }
 
 }  // namespace
@@ -163,29 +169,28 @@ void addYawBands(PointFolderReport& report, std::vector<double> yawDeg, std::vec
   const std::size_t count = edges.size() - 1;
   for (PointFolderMethod& method : report.methods) {
     method.bands.assign(count, {});
-    std::vector<double> boxSum(count, 0.0);
-    std::vector<double> eyeSum(count, 0.0);
-    std::vector<int> scored(count, 0);
+    std::vector<std::vector<double>> boxErrors(count);
+    std::vector<std::vector<double>> eyeErrors(count);
     for (std::size_t i = 0; i < report.stems.size(); ++i) {
       const int k = yawBandOf(yawDeg[i], edges);
       if (k < 0) continue;
-      PointFolderMethod::Band& band = method.bands[static_cast<std::size_t>(k)];
+      const auto b = static_cast<std::size_t>(k);
+      PointFolderMethod::Band& band = method.bands[b];
       ++band.faces;
       band.truePoints += report.truePoints[i];
       const auto& result = method.results[i];
       if (!result || method.rejected[i]) continue;
       ++band.fitted;
       band.foundPoints += result->foundPoints;
-      if (std::isfinite(result->error) && std::isfinite(result->boxError)) {
-        boxSum[static_cast<std::size_t>(k)] += result->boxError;
-        eyeSum[static_cast<std::size_t>(k)] += result->error;
-        ++scored[static_cast<std::size_t>(k)];
-      }
+      if (std::isfinite(result->boxError)) boxErrors[b].push_back(result->boxError);
+      if (std::isfinite(result->error)) eyeErrors[b].push_back(result->error);
     }
     for (std::size_t k = 0; k < count; ++k) {
       PointFolderMethod::Band& band = method.bands[k];
-      band.meanBoxError = scored[k] > 0 ? boxSum[k] / scored[k] : nan;
-      band.meanEyeError = scored[k] > 0 ? eyeSum[k] / scored[k] : nan;
+      const bool boxed = !boxErrors[k].empty();
+      band.meanBoxError = boxed ? describe(boxErrors[k]).mean : nan;
+      band.medianBoxError = boxed ? describe(boxErrors[k]).median : nan;
+      band.meanEyeError = eyeErrors[k].empty() ? nan : describe(eyeErrors[k]).mean;
       band.foundShare =
           band.truePoints > 0 ? static_cast<double>(band.foundPoints) / band.truePoints : nan;
     }
@@ -204,14 +209,39 @@ std::string formatYawBandText(const PointFolderReport& report) {
     for (const PointFolderMethod& m : report.methods) {
       const PointFolderMethod::Band& band = m.bands[k];
       out << "|yaw| " << edgeText(report.bandEdges[k]) << '-' << edgeText(report.bandEdges[k + 1])
-          << "  " << m.label << "  faces " << band.faces << "  fitted " << band.fitted
-          << "  error/box " << formatErrorValue(band.meanBoxError) << "  error/eye "
+          << "  " << m.label << "  faces " << band.faces << "  fitted " << band.fitted << " ("
+          << percentText(band.fitted, band.faces) << ")  error/box "
+          << formatErrorValue(band.meanBoxError) << "  median "
+          << formatErrorValue(band.medianBoxError) << "  error/eye "
           << formatErrorValue(band.meanEyeError) << "  within "
           << fixedText(report.threshold, 2, "") << ": "
           << (std::isfinite(band.foundShare) ? fixedText(100.0 * band.foundShare, 1, "") + "%"
                                              : std::string("n/a"))
           << '\n';
     }
+  }
+  return out.str();
+}
+
+std::string formatYawBandMarkdown(const PointFolderReport& report) {
+  std::ostringstream out;
+  out << "| \\|yaw\\| | photos |";
+  for (const PointFolderMethod& m : report.methods) {
+    out << ' ' << m.label << " fitted | " << m.label << " error / box |";
+  }
+  out << "\n|---|---|";
+  for (std::size_t m = 0; m < report.methods.size(); ++m) out << "---|---|";
+  out << '\n';
+  for (std::size_t k = 0; k + 1 < report.bandEdges.size(); ++k) {
+    const int faces = report.methods.empty() ? 0 : report.methods.front().bands[k].faces;
+    out << "| " << edgeText(report.bandEdges[k]) << '-' << edgeText(report.bandEdges[k + 1])
+        << " | " << faces << " |";
+    for (const PointFolderMethod& m : report.methods) {
+      const PointFolderMethod::Band& band = m.bands[k];
+      out << ' ' << band.fitted << " (" << percentText(band.fitted, band.faces) << ") | "
+          << formatErrorValue(band.meanBoxError) << " |";
+    }
+    out << '\n';
   }
   return out.str();
 }

@@ -49,8 +49,13 @@ std::vector<double> yawsFromModel(const PointFolderReport& report, const ClmMode
 void addYawBands(PointFolderReport& report, std::vector<double> yawDeg, std::vector<double> edges,
                  std::string source);
 
-// "yaw bands (SOURCE; N images without a yaw)" then a row per band and method:
-// "|yaw| A-B  METHOD  faces F  fitted K  error/box E  error/eye D  within T: X%".
+// "yaw bands (SOURCE; N images in no band)" then a row per band and method:
+// "|yaw| A-B  METHOD  faces F  fitted K (P%)  error/box E  median M  error/eye D  within T: X%".
 std::string formatYawBandText(const PointFolderReport& report);
+
+// The band table side by side as Markdown, the shape of docs/real-faces.md: a row per band with
+// "| A-B | faces |" then per method "K (P%) | E |" (faces fitted, mean error / box). Faces are the
+// truth's, the same for every method.
+std::string formatYawBandMarkdown(const PointFolderReport& report);
 
 }  // namespace clm3d
