@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <deque>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -267,9 +268,30 @@ EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& tr
     for (std::size_t i = 0; i < truths.size(); ++i) {
       tables.push_back(readTrackTable(tracker.predictions[i]));
     }
+    // Multi-face tables: each truth face paired with its tracked face, each pair a sequence.
+    std::deque<TrackTable> faceTables;  // the split tables the pairs point into
+    std::vector<FacePairing> pairings;
     for (std::size_t i = 0; i < truths.size(); ++i) {
-      pairs.push_back(
-          {&truthTables[i], &tables[i], truths[i].string(), tracker.predictions[i].string()});
+      const std::string truthName = truths[i].string();
+      const std::string predName = tracker.predictions[i].string();
+      if (!hasFaceColumn(truthTables[i]) && !hasFaceColumn(tables[i])) {
+        pairs.push_back({&truthTables[i], &tables[i], truthName, predName});
+        continue;
+      }
+      for (FacePair& face : pairFaces(truthTables[i], tables[i], scheme, predName)) {
+        const FacePairing& p = face.pairing;
+        faceTables.push_back(std::move(face.truth));
+        const TrackTable* truthFace = &faceTables.back();
+        faceTables.push_back(std::move(face.tracked));
+        pairs.push_back({truthFace, &faceTables.back(),
+                         truthName + (p.truthFace.empty() ? "" : " face " + p.truthFace),
+                         predName + (p.trackedFace.empty() ? "" : " face " + p.trackedFace)});
+        pairings.push_back(p);
+      }
+    }
+    if (!pairings.empty()) {
+      report.faces.resize(report.sequences.size());
+      report.faces.push_back(std::move(pairings));
     }
     auto sequence = evaluateSequences(pairs, scheme, effective);
     sequence.label =
@@ -304,11 +326,41 @@ std::string formatReportJson(const EvaluationReport& report) {
                    {"predictions", predictions},
                    {"comparison", comparisonJson(report)}};
   if (report.buckets) document["buckets"] = bucketsJson(report);
+  if (!report.faces.empty()) {
+    json faces = json::array();
+    for (const auto& sequence : report.faces) {
+      json pairs = json::array();
+      for (const FacePairing& face : sequence) {
+        pairs.push_back({{"truth_face", face.truthFace},
+                         {"tracked_face", face.paired ? json(face.trackedFace) : json(nullptr)},
+                         {"shared_frames", face.sharedFrames},
+                         {"id_switches", face.idSwitches}});
+      }
+      faces.push_back(std::move(pairs));
+    }
+    document["faces"] = std::move(faces);
+  }
   return document.dump(2) + "\n";
 }
 
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report) {
   writeTextAtomically(path, formatReportJson(report));
+}
+
+std::string formatFacePairings(const std::vector<FacePairing>& faces) {
+  std::string out;
+  for (const FacePairing& face : faces) {
+    const std::string truth = face.truthFace.empty() ? "the truth" : "truth face " + face.truthFace;
+    out += "  " + truth + ": ";
+    if (!face.paired) {
+      out += "no tracked face near it\n";
+      continue;
+    }
+    out += (face.trackedFace.empty() ? "the track" : "tracked face " + face.trackedFace) + " (" +
+           std::to_string(face.sharedFrames) + " frames), " + std::to_string(face.idSwitches) +
+           " id switches\n";
+  }
+  return out;
 }
 
 std::string formatReportText(const EvaluationReport& report) {
@@ -319,9 +371,11 @@ std::string formatReportText(const EvaluationReport& report) {
          (truths > 1 ? " in " + std::to_string(truths) + " sequences, pooled" : "") + ", scheme " +
          report.schemeName + ", error = point distance / inter-ocular " + "distance, threshold " +
          fixedText(report.options.threshold, 2) + ")\n";
-  for (const auto& sequence : report.sequences) {
+  for (std::size_t k = 0; k < report.sequences.size(); ++k) {
+    const auto& sequence = report.sequences[k];
     const auto& s = sequence.summary;
     out += "\n" + sequence.label + " (" + sequence.source + ")\n";
+    if (k < report.faces.size()) out += formatFacePairings(report.faces[k]);
     out += "  frames: " + std::to_string(s.predictedFrames) + "/" +
            std::to_string(s.normalisedFrames) + " predicted, " + std::to_string(s.succeededFrames) +
            " succeeded (" + std::to_string(s.wrongSuccesses) + " with an error above " +

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/eval/error_buckets.hpp"
+#include "core/eval/face_pairing.hpp"
 #include "core/eval/landmark_error.hpp"
 #include "core/eval/statistics.hpp"
 #include "core/scheme/scheme.hpp"
@@ -33,6 +34,10 @@ struct EvaluationReport {
   std::vector<SequenceEvaluation> sequences;  // one per prediction (tracker)
   Comparison comparison;
   std::optional<BucketedErrors> buckets;  // when asked for
+  // Per sequence (tracker), per truth file and face: how the truth's faces were paired with the
+  // tracked ones (core/eval/face_pairing.hpp). Empty unless a truth or a prediction has a face
+  // column; then each face pair is one of the pooled sequences.
+  std::vector<std::vector<FacePairing>> faces;
 };
 
 // One tracker's predictions of several sequences: predictions[i] is its output for truth i.
@@ -76,7 +81,8 @@ EvaluationReport evaluateTrackFiles(const std::vector<std::filesystem::path>& tr
 // "success", "converged", "jitter", "nmj", "sequence"}]}], "comparison": {...} or null,
 // "truths": [...], and with buckets "buckets": {"column", "absolute", "edges", "predictions":
 // [{"label", "outside", "buckets": [{"low", "high", "frames", "scored", "mean", "median",
-// "convergence_rate", "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too. NaN is null.
+// "convergence_rate", "points_within_threshold", "regions"}]}]}}. Each prediction has "files" too.
+// NaN is null.
 std::string formatReportJson(const EvaluationReport& report);
 // Written atomically.
 void writeReportJson(const std::filesystem::path& path, const EvaluationReport& report);
@@ -95,6 +101,8 @@ std::string formatComparison(const EvaluationReport& report);
 // A few lines per prediction: frames, mean/median/SD error, convergence rate, points within the
 // threshold, per-region means, jitter, NMJ and lag; then the test; then the buckets' tables.
 std::string formatReportText(const EvaluationReport& report);
+// "  truth face 0: tracked face 1 (120 frames), 0 id switches" per face (formatReportText).
+std::string formatFacePairings(const std::vector<FacePairing>& faces);
 
 // The buckets as Markdown tables (docs/evaluation.md): per tracker the mean and median error,
 // convergence and points within the threshold (frames in brackets) per bucket, then the regions'

@@ -63,6 +63,33 @@ TEST(TrackFacesCli, EveryFaceGetsRowsWithAStableId) {
   EXPECT_EQ(idIsTop.size(), 2u);
   for (const auto& [frame, rows] : rowsPerFrame) EXPECT_EQ(rows, 2) << "frame " << frame;
 
+  // clm3d eval pairs the truth's faces with the tracked ids, whatever their numbers.
+  TrackTable truth;
+  truth.landmarkCount = 25;
+  truth.extraColumns = {"face"};
+  for (std::size_t k = 0; k < f.frames.size(); ++k) {
+    for (const auto& [points, face] :
+         {std::pair(&f.frames[k].top, "0"), std::pair(&f.frames[k].bottom, "1")}) {
+      TrackRow row;
+      row.frame = static_cast<int>(k);
+      row.timestamp = static_cast<double>(k) / 25.0;
+      row.success = true;
+      row.confidence = 1.0;
+      row.points = *points;
+      row.extraCells = {face};
+      truth.rows.push_back(std::move(row));
+    }
+  }
+  const std::string truthFile = (f.dir / "two-truth.csv").string();
+  writeTrackTable(truthFile, truth);
+  const auto eval = runClm3d("eval --truth " + truthFile + " --pred " + tracks);
+  ASSERT_EQ(eval.exitCode, 0) << eval.output;
+  EXPECT_NE(eval.output.find("truth face 0: tracked face"), std::string::npos) << eval.output;
+  EXPECT_NE(eval.output.find("truth face 1: tracked face"), std::string::npos) << eval.output;
+  EXPECT_EQ(eval.output.find("no tracked face"), std::string::npos) << eval.output;
+  EXPECT_NE(eval.output.find(", 0 id switches"), std::string::npos) << eval.output;
+  EXPECT_EQ(eval.output.find(", 1 id switches"), std::string::npos) << eval.output;
+
   const std::string one = (f.dir / "one.csv").string();
   const auto single =
       runClm3d("track --quiet --model " + f.model + " --video " + f.video + " --out " + one);
