@@ -6,13 +6,19 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/commands/commands.hpp"
+#include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/eval/sequence_yaw_bands.hpp"
+#include "core/eval/yaw_bands.hpp"
+#include "core/geometry/camera.hpp"
+#include "core/model/model_file.hpp"
 #include "core/scheme/scheme.hpp"
 
 namespace clm3d::cli {
@@ -35,6 +41,9 @@ struct EvalArgs {
   double bucketWidth = 0.0;
   std::vector<double> bucketEdges;
   fs::path bucketCsv;
+  std::string yawBands;
+  fs::path model;
+  fs::path bandTable;
 };
 
 void runEval(const EvalArgs& args) {
@@ -61,23 +70,46 @@ void runEval(const EvalArgs& args) {
   buckets.width = args.bucketWidth;
   buckets.edges = args.bucketEdges;
 
+  const bool banded = !args.yawBands.empty();
+  if (banded && bucketed) {
+    throw CLI::ValidationError("--yaw-bands", "give --yaw-bands or --bucket-by, not both");
+  }
+  if (!banded && (!args.model.empty() || !args.bandTable.empty())) {
+    throw CLI::ValidationError("--model/--band-table", "--model and --band-table need --yaw-bands");
+  }
+
   const Scheme scheme = Scheme::byNameOrPath(args.scheme);
   EvalOptions options;
   options.threshold = args.threshold;
   options.wrongAbove = args.wrongAbove;
-  const auto report =
-      evaluateTrackFiles(args.truths, trackers, scheme, options, bucketed ? &buckets : nullptr);
+  EvaluationReport report;
+  if (banded) {
+    std::optional<ClmModel> model;
+    if (!args.model.empty()) model = loadModel(args.model);
+    report = evaluateTrackFilesByYaw(args.truths, trackers, scheme, options,
+                                     parseBandEdges(args.yawBands), model ? &*model : nullptr,
+                                     kDefaultVerticalFovDeg);
+  } else {
+    report =
+        evaluateTrackFiles(args.truths, trackers, scheme, options, bucketed ? &buckets : nullptr);
+  }
 
   // With --json, stdout holds only the JSON document; where files went is said on stderr.
   std::ostream& notes = args.json ? std::cerr : std::cout;
+  const std::string json = banded ? formatYawBandReportJson(report) : formatReportJson(report);
   if (args.json) {
-    std::cout << formatReportJson(report);
+    std::cout << json;
   } else {
     std::cout << formatReportText(report);
+    if (banded) std::cout << '\n' << formatSequenceYawBands(report);
   }
   if (!args.out.empty()) {
-    writeReportJson(args.out, report);
+    writeTextAtomically(args.out, json);
     notes << "report: " << args.out.string() << '\n';
+  }
+  if (!args.bandTable.empty()) {
+    writeTextAtomically(args.bandTable, formatSequenceYawBandMarkdown(report));
+    notes << "band table: " << args.bandTable.string() << '\n';
   }
   if (!args.bucketCsv.empty()) {
     writeBucketsCsv(args.bucketCsv, report);
@@ -141,6 +173,15 @@ void addEvalCommand(CLI::App& root) {
       ->delimiter(',');
   command->add_option("--bucket-csv", args->bucketCsv,
                       "Also write the buckets' figures as CSV (one row per tracker and bucket)");
+  command->add_option("--yaw-bands", args->yawBands,
+                      "Errors per |yaw| band of the truth, edges in degrees (e.g. 0,30,60,90): "
+                      "per band the frames, the share tracked, the error over the truth's face "
+                      "box and over the eye distance");
+  command->add_option("--model", args->model,
+                      "With --yaw-bands: a truth frame without a pose gets the yaw of this model "
+                      "fitted to its points");
+  command->add_option("--band-table", args->bandTable,
+                      "With --yaw-bands: also write the bands as Markdown, trackers side by side");
   command->add_flag("--json", args->json, "Print the report as JSON instead of text");
   command->add_option("--plot", args->plotDir,
                       "Folder for cdf.png, error-per-frame.png and regions.png");

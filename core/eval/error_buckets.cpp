@@ -48,6 +48,15 @@ std::vector<double> bucketEdges(const BucketSpec& spec,
   return edges;
 }
 
+int bucketIndexOf(double value, const std::vector<double>& edges) {
+  if (edges.size() < 2 || !std::isfinite(value) || value < edges.front() || value > edges.back()) {
+    return -1;
+  }
+  const auto above = std::upper_bound(edges.begin(), edges.end(), value);
+  const int index = static_cast<int>(above - edges.begin()) - 1;
+  return std::min(index, static_cast<int>(edges.size()) - 2);  // the high edge joins the last
+}
+
 BucketedErrors bucketErrors(const std::vector<SequenceEvaluation>& evaluations,
                             const BucketSpec& spec, const Scheme& scheme,
                             const EvalOptions& options) {
@@ -56,19 +65,11 @@ BucketedErrors bucketErrors(const std::vector<SequenceEvaluation>& evaluations,
   result.absolute = spec.absolute;
   result.edges = bucketEdges(spec, evaluations);
   const std::size_t bucketCount = result.edges.size() - 1;
-  const auto bucketOf = [&](double value) -> int {
-    if (!std::isfinite(value) || value < result.edges.front() || value > result.edges.back()) {
-      return -1;
-    }
-    const auto above = std::upper_bound(result.edges.begin(), result.edges.end(), value);
-    const int index = static_cast<int>(above - result.edges.begin()) - 1;
-    return std::min(index, static_cast<int>(bucketCount) - 1);  // the high edge joins the last
-  };
   for (const auto& evaluation : evaluations) {
     std::vector<std::vector<FrameError>> members(bucketCount);
     int outside = 0;
     for (const auto& frame : evaluation.frames) {
-      const int bucket = bucketOf(frame.key);
+      const int bucket = bucketIndexOf(frame.key, result.edges);
       if (bucket < 0) {
         ++outside;
         continue;

@@ -35,7 +35,15 @@ struct BucketedErrors {
   std::vector<std::vector<ErrorBucket>> buckets;
   // Per evaluation: truth frames whose value is outside the edges or missing (not in any bucket).
   std::vector<int> outside;
+  // Where the values came from when not only from the column (e.g. "yaw of the truth; 12 frames
+  // without one: of model M fitted to the truth's points"); empty otherwise.
+  std::string source;
 };
+
+// The bucket of a value: k for edges[k] <= value < edges[k+1], the last bucket including its high
+// edge; -1 for a NaN value or one outside the edges. The one band rule of clm3d eval's buckets and
+// eval-points' yaw bands (yawBandOf).
+int bucketIndexOf(double value, const std::vector<double>& edges);
 
 // The edges of spec over the evaluations' frame keys. Throws InputError for edges that do not
 // increase, fewer than two of them, a width that is not positive, both or neither given, or (for a

@@ -48,6 +48,9 @@ FrameError frameError(const TrackRow& truth, const TrackRow* prediction, const S
     ++count;
   }
   if (count > 0) result.error = sum / count;
+  if (count > 0 && result.faceSize > 1e-9) {
+    result.boxError = result.error * result.interOcular / result.faceSize;
+  }
   result.converged = result.success && count > 0 && result.error < options.threshold;
   return result;
 }
@@ -116,6 +119,7 @@ ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme
   ErrorSummary s;
   s.truthFrames = static_cast<int>(frames.size());
   std::vector<double> frameErrors;
+  std::vector<double> boxErrors;
   std::vector<double> allPointErrors;
   const auto& regions = scheme.regions();
   std::vector<std::vector<double>> regionErrors(regions.size());
@@ -132,6 +136,7 @@ ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme
     if (std::isfinite(frame.error)) {
       ++s.scoredFrames;
       frameErrors.push_back(frame.error);
+      if (std::isfinite(frame.boxError)) boxErrors.push_back(frame.boxError);
     }
     for (int i = 0; i < static_cast<int>(frame.pointErrors.size()); ++i) {
       if (!frame.truePoints[static_cast<std::size_t>(i)]) continue;
@@ -161,6 +166,10 @@ ErrorSummary summariseFrames(const std::vector<FrameError>& frames, const Scheme
   s.convergenceRate = share(s.convergedFrames, s.normalisedFrames);
   s.withinThreshold = share(s.foundPoints, s.truePoints);
   s.meanPointError = describe(allPointErrors).mean;
+  const auto boxStats = describe(boxErrors);
+  s.meanBoxError = boxStats.mean;
+  s.medianBoxError = boxStats.median;
+  s.fittedShare = share(s.succeededFrames, s.normalisedFrames);
 
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto regionStats = describe(regionErrors[r]);

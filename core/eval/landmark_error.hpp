@@ -59,6 +59,10 @@ struct FrameError {
   // not shrink with yaw as the eye distance does (docs/evaluation.md). NaN when jitter is.
   double nmj = std::numeric_limits<double>::quiet_NaN();
   double faceSize = 0.0;  // sqrt of the area of the truth's point box, pixels; 0 if degenerate
+  // The frame's mean pixel error over the same points divided by faceSize: the normalisation used
+  // at large pose, where the eye distance shrinks as the head turns. NaN when error is or the box
+  // is degenerate.
+  double boxError = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RegionError {
@@ -92,6 +96,11 @@ struct ErrorSummary {
   int foundPoints = 0;           // of those, predicted with error <= threshold
   double withinThreshold = 0.0;  // foundPoints / truePoints
   double meanPointError = 0.0;   // mean of every pooled point error (figure 5.13's line)
+  // Mean and median of the scored frames' boxError (FrameError), NaN when none has one.
+  double meanBoxError = std::numeric_limits<double>::quiet_NaN();
+  double medianBoxError = std::numeric_limits<double>::quiet_NaN();
+  // succeededFrames / normalisedFrames: the share of the frames the tracker says it fitted.
+  double fittedShare = std::numeric_limits<double>::quiet_NaN();
   // Mean of the frames' jitter (NaN when no frame has one) and how many frames had one.
   double jitter = std::numeric_limits<double>::quiet_NaN();
   int jitterFrames = 0;

@@ -10,6 +10,8 @@
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
 #include "core/detect/initialisation.hpp"
+#include "core/eval/band_table.hpp"
+#include "core/eval/error_buckets.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/eval/statistics.hpp"
 #include "core/geometry/camera.hpp"
@@ -37,16 +39,6 @@ double parseFinite(const std::string& text) {
     return std::numeric_limits<double>::quiet_NaN();
   }
   return used == text.size() ? value : std::numeric_limits<double>::quiet_NaN();
-}
-
-// A band edge: whole degrees without decimals.
-std::string edgeText(double degrees) {
-  return fixedText(degrees, degrees == std::round(degrees) ? 0 : 1, "");
-}
-
-// "97.0%", or "n/a" for no faces.
-std::string percentText(int part, int whole) {
-  return whole > 0 ? fixedText(100.0 * part / whole, 1, "") + "%" : std::string("n/a");
 }
 
 }  // namespace
@@ -103,15 +95,7 @@ std::vector<double> parseBandEdges(std::string_view text) {
 }
 
 int yawBandOf(double yawDeg, const std::vector<double>& edges) {
-  const double a = std::abs(yawDeg);
-  if (!std::isfinite(a) || edges.size() < 2) return -1;
-  for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
-    const bool last = k + 2 == edges.size();
-    if (a >= edges[k] && (a < edges[k + 1] || (last && a <= edges[k + 1]))) {
-      return static_cast<int>(k);
-    }
-  }
-  return -1;
+  return bucketIndexOf(std::abs(yawDeg), edges);
 }
 
 std::vector<double> yawsByStem(const PointFolderReport& report,
@@ -134,29 +118,42 @@ std::vector<double> yawsFromModel(const PointFolderReport& report, const ClmMode
   }
   std::vector<double> yaws;
   for (const LandmarkSet& truth : report.truths) {
-    Eigen::Matrix2Xd points = Eigen::Matrix2Xd::Zero(2, n);
-    std::vector<bool> present(static_cast<std::size_t>(n), false);
-    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector2d high = -low;
+    Eigen::Matrix2Xd points =
+        Eigen::Matrix2Xd::Constant(2, n, std::numeric_limits<double>::quiet_NaN());
     for (int i = 0; i < n; ++i) {
-      if (!truth.has(i)) continue;
-      points.col(i) = truth.point(i).head<2>();
-      present[static_cast<std::size_t>(i)] = true;
-      low = low.cwiseMin(points.col(i));
-      high = high.cwiseMax(points.col(i));
+      if (truth.has(i)) points.col(i) = truth.point(i).head<2>();
     }
-    if (truth.presentCount() < 4) {
-      yaws.push_back(std::numeric_limits<double>::quiet_NaN());
-      continue;
-    }
-    const Eigen::Vector2d centre = 0.5 * (low + high);
-    const int width = std::max(16, static_cast<int>(std::ceil(2.0 * centre.x())));
-    const int height = std::max(16, static_cast<int>(std::ceil(2.0 * centre.y())));
-    const Camera camera = Camera::fromVerticalFov(width, height, verticalFovDeg);
-    const FitState state = stateFromPoints(model, camera, points, present);
-    yaws.push_back(degrees(state.pose.yaw));
+    yaws.push_back(fittedYawDeg(model, points, verticalFovDeg));
   }
   return yaws;
+}
+
+double fittedYawDeg(const ClmModel& model, const Eigen::Matrix2Xd& points, double verticalFovDeg) {
+  const int n = model.shape.pointCount();
+  if (points.cols() != n) {
+    throw InputError("the model's scheme " + model.scheme().name() + " has " + std::to_string(n) +
+                     " points, the truth " + std::to_string(points.cols()));
+  }
+  std::vector<bool> present(static_cast<std::size_t>(n), false);
+  Eigen::Matrix2Xd filled = Eigen::Matrix2Xd::Zero(2, n);
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d high = -low;
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!points.col(i).allFinite()) continue;
+    filled.col(i) = points.col(i);
+    present[static_cast<std::size_t>(i)] = true;
+    low = low.cwiseMin(points.col(i));
+    high = high.cwiseMax(points.col(i));
+    ++count;
+  }
+  if (count < 4) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector2d centre = 0.5 * (low + high);
+  const int width = std::max(16, static_cast<int>(std::ceil(2.0 * centre.x())));
+  const int height = std::max(16, static_cast<int>(std::ceil(2.0 * centre.y())));
+  const Camera camera = Camera::fromVerticalFov(width, height, verticalFovDeg);
+  const FitState state = stateFromPoints(model, camera, filled, present);
+  return degrees(state.pose.yaw);
 }
 
 void addYawBands(PointFolderReport& report, std::vector<double> yawDeg, std::vector<double> edges,
@@ -200,50 +197,35 @@ void addYawBands(PointFolderReport& report, std::vector<double> yawDeg, std::vec
   report.yawSource = std::move(source);
 }
 
-std::string formatYawBandText(const PointFolderReport& report) {
-  std::ostringstream out;
-  int unbanded = 0;
-  for (const double yaw : report.yawDeg) unbanded += yawBandOf(yaw, report.bandEdges) < 0 ? 1 : 0;
-  out << "yaw bands (" << report.yawSource << "; " << unbanded << " images in no band)\n";
-  for (std::size_t k = 0; k + 1 < report.bandEdges.size(); ++k) {
-    for (const PointFolderMethod& m : report.methods) {
-      const PointFolderMethod::Band& band = m.bands[k];
-      out << "|yaw| " << edgeText(report.bandEdges[k]) << '-' << edgeText(report.bandEdges[k + 1])
-          << "  " << m.label << "  faces " << band.faces << "  fitted " << band.fitted << " ("
-          << percentText(band.fitted, band.faces) << ")  error/box "
-          << formatErrorValue(band.meanBoxError) << "  median "
-          << formatErrorValue(band.medianBoxError) << "  error/eye "
-          << formatErrorValue(band.meanEyeError) << "  within "
-          << fixedText(report.threshold, 2, "") << ": "
-          << (std::isfinite(band.foundShare) ? fixedText(100.0 * band.foundShare, 1, "") + "%"
-                                             : std::string("n/a"))
-          << '\n';
+namespace {
+
+BandTable folderBandTable(const PointFolderReport& report) {
+  BandTable table;
+  table.edges = report.bandEdges;
+  table.source = report.yawSource;
+  for (const double yaw : report.yawDeg) table.unbanded += yawBandOf(yaw, report.bandEdges) < 0;
+  table.faceWord = "faces";
+  table.threshold = report.threshold;
+  for (const PointFolderMethod& m : report.methods) {
+    table.labels.push_back(m.label);
+    std::vector<BandFigures> row;
+    for (const PointFolderMethod::Band& band : m.bands) {
+      row.push_back({band.faces, band.fitted, band.meanBoxError, band.medianBoxError,
+                     band.meanEyeError, band.foundShare});
     }
+    table.rows.push_back(std::move(row));
   }
-  return out.str();
+  return table;
+}
+
+}  // namespace
+
+std::string formatYawBandText(const PointFolderReport& report) {
+  return formatBandLines(folderBandTable(report));
 }
 
 std::string formatYawBandMarkdown(const PointFolderReport& report) {
-  std::ostringstream out;
-  out << "| \\|yaw\\| | photos |";
-  for (const PointFolderMethod& m : report.methods) {
-    out << ' ' << m.label << " fitted | " << m.label << " error / box |";
-  }
-  out << "\n|---|---|";
-  for (std::size_t m = 0; m < report.methods.size(); ++m) out << "---|---|";
-  out << '\n';
-  for (std::size_t k = 0; k + 1 < report.bandEdges.size(); ++k) {
-    const int faces = report.methods.empty() ? 0 : report.methods.front().bands[k].faces;
-    out << "| " << edgeText(report.bandEdges[k]) << '-' << edgeText(report.bandEdges[k + 1])
-        << " | " << faces << " |";
-    for (const PointFolderMethod& m : report.methods) {
-      const PointFolderMethod::Band& band = m.bands[k];
-      out << ' ' << band.fitted << " (" << percentText(band.fitted, band.faces) << ") | "
-          << formatErrorValue(band.meanBoxError) << " |";
-    }
-    out << '\n';
-  }
-  return out.str();
+  return formatBandMarkdown(folderBandTable(report), "photos");
 }
 
 }  // namespace clm3d

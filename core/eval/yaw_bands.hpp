@@ -43,6 +43,12 @@ std::vector<double> yawsByStem(const PointFolderReport& report,
 std::vector<double> yawsFromModel(const PointFolderReport& report, const ClmModel& model,
                                   double verticalFovDeg);
 
+// The yaw in degrees of the model's 3D shape fitted to 2D points (stateFromPoints; columns in the
+// model's scheme, NaN columns missing), NaN for fewer than 4 present points. The camera has the
+// vertical field of view verticalFovDeg over an image twice the distance from the origin to the
+// centre of the points' box. InputError when the column count is not the model's point count.
+double fittedYawDeg(const ClmModel& model, const Eigen::Matrix2Xd& points, double verticalFovDeg);
+
 // Sets report.yawDeg (one per image), bandEdges and yawSource, and fills every method's bands:
 // a face is fitted when it has a prediction not marked rejected; the mean errors are over the
 // fitted faces with a scored point; points of unfitted faces count as not found.

@@ -133,7 +133,7 @@ TEST(YawBands, BandsFromAnAflwStylePosesCsvWithRejectedAndMissingFits) {
   EXPECT_EQ(json["methods"][0]["bands"][1]["min_abs_yaw"], 30.0);
   EXPECT_EQ(json["methods"][0]["bands"][0]["fitted"], 1);
   const std::string text = formatPointFolderText(report);
-  EXPECT_NE(text.find("1 images in no band"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 faces in no band"), std::string::npos) << text;
   EXPECT_NE(text.find("|yaw| 30-60  fits  faces 1  fitted 0"), std::string::npos) << text;
   EXPECT_NE(formatPointFolderCsv(report).find("b,fits,rejected,"), std::string::npos);
 }
