@@ -58,16 +58,21 @@ void runTrain(TrainArgs& args) {
     if (!placements.empty()) {
       int used = 0;
       int copies = 0;
+      int capped = 0;
       for (const PhotoPlacement& placed : placements) {
         used += placed.samples > 0 ? 1 : 0;
         copies += placed.samples;
+        capped += placed.samples == 0 && placed.capped > 0 ? 1 : 0;
         if (!placed.skipped.empty()) {
           std::cerr << "train: photo " << placed.id << " skipped: " << placed.skipped << '\n';
         }
       }
       std::cerr << "train: " << used << " of " << placements.size() << " photos used (" << copies
-                << " samples with the mirror images); a model trained on photos inherits their "
-                   "licence terms\n";
+                << " samples with the mirror images"
+                << (capped > 0 ? ", " + std::to_string(capped) +
+                                     " left out as their views were full (per_view)"
+                               : std::string())
+                << "); a model trained on photos inherits their licence terms\n";
     }
     interrupt.token().throwIfCancelled();
     std::cerr << "train: saving\n";

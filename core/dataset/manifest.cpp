@@ -210,6 +210,8 @@ PhotoSource parsePhotos(Fields& f) {
   }
   source.limit = static_cast<int>(f.integer("limit", 0, 0, 1000000));
   source.jaw = f.boolean("jaw", false);
+  source.perView = static_cast<int>(f.integer("per_view", 0, 0, 1000000));
+  source.refiner = f.boolean("refiner", true);
   return source;
 }
 

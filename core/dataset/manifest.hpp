@@ -75,8 +75,9 @@ struct IctTexturedSource {
 
 // Annotated photos (docs/real-faces.md): every image of a folder, or every image a text file lists
 // (one path per line, relative to the list's folder; blank lines and # comments skipped), each
-// with a landmark file of the same stem beside it (.pts, .ljson or .csv; 68-point iBUG files are
-// converted to the scheme). Each photo is placed in a view by the 3D pose of its points.
+// with a landmark file of the same stem beside it (.pts, .ljson or .csv; 68-point iBUG and
+// 21-point AFLW files are converted to the scheme by core/scheme/scheme_map.hpp). Each photo is
+// placed in a view by the 3D pose of its points.
 struct PhotoSource {
   std::filesystem::path folder;  // absolute; empty when `list` is given
   std::filesystem::path list;    // absolute; empty when `folder` is given
@@ -84,6 +85,14 @@ struct PhotoSource {
   // Trust the cheek and chin-side points a 68-point file's jaw contour gives (by default they
   // train nothing: the contour slides along the jaw, so they have no fixed anatomical place).
   bool jaw = false;
+  // At most this many samples (a photo or its mirror image) of this source join each view (0 = no
+  // cap), the first in list order: a large set at every pose (AFLW) trains the side views without
+  // multiplying the training time in the views it crowds.
+  int perView = 0;
+  // The point refiner (core/train/refiner_training.hpp) learns from this source's photos. A
+  // source whose photos mark few points at side poses would leave the refiner too few points
+  // marked in nearly every photo.
+  bool refiner = true;
 };
 
 struct DatasetManifest {
@@ -96,7 +105,7 @@ struct DatasetManifest {
   std::vector<MakeHumanSource> makehuman;
   std::vector<PhotoSource> photos;
   AugmentationSettings augmentation;  // appearance augmentation of the training renders
-  std::string name;  // for provenance; defaults to the file's stem
+  std::string name;                   // for provenance; defaults to the file's stem
 };
 
 // Ids of the textured subjects a manifest yields: "SUBJECT/EXPRESSION" for a scan,

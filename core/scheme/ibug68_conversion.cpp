@@ -87,30 +87,28 @@ const std::vector<Thesis25FromIbug68>& thesis25FromIbug68Table() {
   return table;
 }
 
+const SchemeMap& ibug68ToThesis25Map() {
+  static const SchemeMap map = [] {
+    SchemeMap m;
+    m.source = "ibug68";
+    m.sourcePoints = 68;
+    m.target = Scheme::thesis25().name();
+    for (const auto& entry : thesis25FromIbug68Table()) {
+      // Point 1, the centre between the eyes, is the midpoint of the inner eye corners here: a
+      // construction, where the 3D annotations put the point on the bridge of the nose, above and
+      // in front of that line.
+      const MapTrust trust = entry.thesisIndex == 0                 ? MapTrust::Derived
+                             : isJawContourPoint(entry.thesisIndex) ? MapTrust::Contour
+                                                                    : MapTrust::Exact;
+      m.entries.push_back({entry.ibugIndices, trust});
+    }
+    return m;
+  }();
+  return map;
+}
+
 LandmarkSet ibug68ToThesis25(const LandmarkSet& ibug68) {
-  if (ibug68.size() != 68) {
-    throw std::invalid_argument("iBUG 68 conversion needs 68 points, not " +
-                                std::to_string(ibug68.size()));
-  }
-  const auto& table = thesis25FromIbug68Table();
-  LandmarkSet result(static_cast<int>(table.size()), ibug68.dims());
-  for (const auto& entry : table) {
-    if (entry.ibugIndices.empty()) continue;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    bool complete = true;
-    for (const int source : entry.ibugIndices) {
-      if (!ibug68.has(source)) {
-        complete = false;
-        break;
-      }
-      sum += ibug68.point(source);
-    }
-    if (complete) {
-      result.set(entry.thesisIndex,
-                 Eigen::Vector3d(sum / static_cast<double>(entry.ibugIndices.size())));
-    }
-  }
-  return result;
+  return ibug68ToThesis25Map().apply(ibug68);
 }
 
 bool isJawContourPoint(int thesisIndex) {

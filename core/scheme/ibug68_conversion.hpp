@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/scheme/landmark_set.hpp"
+#include "core/scheme/scheme_map.hpp"
 
 namespace clm3d {
 
@@ -27,8 +28,12 @@ const std::vector<Thesis25FromIbug68>& thesis25FromIbug68Table();
 // photos, and photo sequences leave them out of their truth.
 bool isJawContourPoint(int thesisIndex);
 
-// Converts a 68-point iBUG set (2D or 3D, iBUG .pts order) to thesis25 order and size.
-// Throws std::invalid_argument if ibug68 does not have 68 points.
+// The table as a scheme map (core/scheme/scheme_map.hpp): point 1 is Derived (not trusted to train
+// patches), the jaw-contour points are Contour, the others Exact.
+const SchemeMap& ibug68ToThesis25Map();
+
+// Converts a 68-point iBUG set (2D or 3D, iBUG .pts order) to thesis25 order and size (the map's
+// apply). Throws std::invalid_argument if ibug68 does not have 68 points.
 LandmarkSet ibug68ToThesis25(const LandmarkSet& ibug68);
 
 }  // namespace clm3d

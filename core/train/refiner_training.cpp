@@ -22,9 +22,13 @@ constexpr std::size_t kCheckMinFaces = 40;
 
 }  // namespace
 
-DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const Scheme& scheme,
+DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& allPhotos, const Scheme& scheme,
                                  const TrainSettings& settings, const ProgressCallback& progress,
                                  const CancelToken* cancel) {
+  std::vector<TrainingPhoto> photos;  // those of the sources the refiner learns from
+  for (const TrainingPhoto& photo : allPhotos) {
+    if (photo.refiner) photos.push_back(photo);
+  }
   if (settings.refinerStages <= 0 || photos.empty()) return {};
   const int count = scheme.size();
   std::vector<int> marked(static_cast<std::size_t>(count), 0);

@@ -1,9 +1,9 @@
 // Training the model's point refiner (core/refine/descent_refinement.hpp) from the manifest's
-// annotated photos: the refined points are those the photos' mark-up trusts (TrainingPhoto::trusted,
-// as the patch experts learn them) in nearly every photo: for an iBUG 68 mark-up, the 18 with an
-// exact counterpart. Each photo is used as it is and left-right mirrored (photos that do not trust
-// every refined point are left out), and the starts are its true points moved as a search
-// typically leaves them.
+// annotated photos: the refined points are those the photos' mark-up trusts
+// (TrainingPhoto::trusted, as the patch experts learn them) in nearly every photo: for an iBUG 68
+// mark-up, the 18 with an exact counterpart. Each photo is used as it is and left-right mirrored
+// (photos that do not trust every refined point are left out), and the starts are its true points
+// moved as a search typically leaves them.
 #pragma once
 
 #include <vector>
@@ -16,9 +16,10 @@
 
 namespace clm3d {
 
-// The refiner of settings.refinerStages stages; empty when there are none or no photo has the
-// scheme's eye pair. Photos that cannot be read are skipped (the texture training reports them).
-// Progress stage "refiner"; Cancelled when `cancel` fires.
+// The refiner of settings.refinerStages stages, learnt from the photos whose source lets it
+// (TrainingPhoto::refiner); empty when there are none or no such photo has the scheme's eye pair.
+// Photos that cannot be read are skipped (the texture training reports them). Progress stage
+// "refiner"; Cancelled when `cancel` fires.
 DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& photos, const Scheme& scheme,
                                  const TrainSettings& settings,
                                  const ProgressCallback& progress = {},
