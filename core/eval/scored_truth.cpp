@@ -1,61 +1,28 @@
 #include "core/eval/scored_truth.hpp"
 
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #include "core/common/error.hpp"
 #include "core/eval/face_box.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
+#include "core/scheme/scheme_map.hpp"
 
 namespace clm3d {
 namespace {
 
-constexpr int kAflwPoints = 21;
-
-// 1-based AFLW point -> thesis25 id, as score_aflw21.py pairs them.
-struct AflwPair {
-  int aflw;
-  const char* thesisId;
-};
-
-std::vector<std::pair<int, int>> resolveAflwPairs() {
-  static const AflwPair pairs[] = {
-      {1, "right_brow_outer"},    {3, "right_brow_inner"},   {4, "left_brow_inner"},
-      {6, "left_brow_outer"},     {7, "right_eye_outer"},    {8, "right_eye_centre"},
-      {9, "right_eye_inner"},     {10, "left_eye_inner"},    {11, "left_eye_centre"},
-      {12, "left_eye_outer"},     {13, "right_earlobe"},     {14, "right_nose_base"},
-      {15, "nose_tip"},           {16, "left_nose_base"},    {17, "left_earlobe"},
-      {18, "right_mouth_corner"}, {20, "left_mouth_corner"}, {21, "chin_centre"},
-  };
-  std::vector<std::pair<int, int>> table;
-  for (const AflwPair& pair : pairs) {
-    const int thesis = Scheme::thesis25().indexOf(pair.thesisId);
-    if (thesis < 0) throw std::logic_error(std::string("unknown thesis25 id ") + pair.thesisId);
-    table.emplace_back(pair.aflw - 1, thesis);
+// The points of `marked` that `map` pairs exactly with the scoring scheme (score_aflw21.py's
+// pairs: a derived point such as AFLW's midpoint of the inner eye corners is not scored).
+LandmarkSet exactlyPaired(const SchemeMap& map, const LandmarkSet& marked) {
+  LandmarkSet points = map.apply(marked);
+  for (int i = 0; i < points.size(); ++i) {
+    if (map.entries[static_cast<std::size_t>(i)].trust != MapTrust::Exact) points.setMissing(i);
   }
-  return table;
+  return points;
 }
 
 }  // namespace
-
-const std::vector<std::pair<int, int>>& aflw21ToThesis25Pairs() {
-  static const std::vector<std::pair<int, int>> table = resolveAflwPairs();
-  return table;
-}
-
-LandmarkSet aflw21ToThesis25(const LandmarkSet& aflw21) {
-  if (aflw21.size() != kAflwPoints) {
-    throw std::invalid_argument("the AFLW pairing needs 21 points, not " +
-                                std::to_string(aflw21.size()));
-  }
-  LandmarkSet result(Scheme::thesis25().size(), aflw21.dims());
-  for (const auto& [aflw, thesis] : aflw21ToThesis25Pairs()) {
-    if (aflw21.has(aflw)) result.set(thesis, aflw21.point(aflw));
-  }
-  return result;
-}
 
 void dropInvisibleMarks(LandmarkSet& set, const std::filesystem::path& file) {
   if (file.extension() != ".pts") return;
@@ -77,9 +44,9 @@ ScoredTruth readScoredTruth(const std::filesystem::path& file, const Scheme& sch
     dropInvisibleMarks(marked, file);
     truth.points = ibug68ToThesis25(marked);
     truth.fileScheme = "ibug68";
-  } else if (thesis && marked.size() == kAflwPoints) {
+  } else if (thesis && marked.size() == aflw21ToThesis25Map().sourcePoints) {
     dropInvisibleMarks(marked, file);
-    truth.points = aflw21ToThesis25(marked);
+    truth.points = exactlyPaired(aflw21ToThesis25Map(), marked);
     truth.fileScheme = "aflw21";
   } else {
     throwInputError(

@@ -1,10 +1,10 @@
 // A hand mark-up read for scoring against predictions in the model's scheme, whatever scheme the
 // mark-up is in: the one place in eval that pairs another scheme's points with the model's (iBUG
-// 68 through core/scheme's table; AFLW's 21 points with thesis25, as
-// ../shared/tools/score_aflw21.py pairs them) and keeps the face box of the file's own points, so
-// that the box error of `clm3d eval-points` is that of the truth as marked (the 68-point box, the
-// box of AFLW's visible points), not of the subset the schemes share. docs/evaluation.md,
-// "Truths in other schemes".
+// 68 through core/scheme's table; AFLW's 21 points with thesis25 through
+// core/scheme/scheme_map, as ../shared/tools/score_aflw21.py pairs them) and keeps the face box of
+// the file's own points, so that the box error of `clm3d eval-points` is that of the truth as
+// marked (the 68-point box, the box of AFLW's visible points), not of the subset the schemes share.
+// docs/evaluation.md, "Truths in other schemes".
 #pragma once
 
 #include <filesystem>
@@ -27,15 +27,6 @@ struct ScoredTruth {
   // The file's scheme: the scoring scheme's name, "ibug68" or "aflw21".
   std::string fileScheme;
 };
-
-// AFLW's 21 points ("left" = the image's left, the subject's right) paired with thesis25's
-// (0-based AFLW index, 0-based thesis25 index): 18 pairs, no counterpart for the brow centres (2,
-// 5) and the mouth centre (19). The pairing of score_aflw21.py.
-const std::vector<std::pair<int, int>>& aflw21ToThesis25Pairs();
-
-// A 21-point AFLW set in thesis25 order and size (unpaired and missing points missing).
-// std::invalid_argument if the set does not have 21 points.
-LandmarkSet aflw21ToThesis25(const LandmarkSet& aflw21);
 
 // Reads a truth file for scoring in `scheme`: a file of the scheme's size as it is; a 68-point
 // file (iBUG) or a 21-point file (AFLW) converted when the scheme is thesis25. A .pts point written
