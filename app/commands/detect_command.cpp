@@ -1,8 +1,10 @@
 // clm3d detect: face detectors measured on annotated photos (core/detect/detector_evaluation):
 // faces found, wrong faces picked, no face, time per image; with --calibrate the box calibration
 // measured on the photos; with --model the start error of the mean shape placed in the box.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,7 +14,9 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/common/image_list.hpp"
+#include "core/common/number_text.hpp"
 #include "core/detect/detector_evaluation.hpp"
+#include "core/eval/yaw_bands.hpp"
 #include "core/model/model_file.hpp"
 
 namespace clm3d::cli {
@@ -21,7 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct DetectArgs {
-  fs::path images, truthDir, model, out;
+  fs::path images, truthDir, model, out, poses;
+  std::string yawBands = "0,30,60,90";
   std::vector<std::string> detectors;
   std::vector<fs::path> calibrations;
   bool calibrate = false;
@@ -73,6 +78,21 @@ void runDetect(const DetectArgs& args) {
   if (!args.startError) {
     for (DetectorEvaluation& e : report.detectors) e.startErrors.clear();
   }
+  if (!args.poses.empty()) {
+    const std::vector<double> edges = parseBandEdges(args.yawBands);
+    const auto edge = [](double d) { return fixedText(d, d == std::round(d) ? 0 : 1); };
+    std::vector<std::string> labels;
+    for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
+      labels.push_back(edge(edges[k]) + "-" + edge(edges[k + 1]));
+    }
+    const std::map<std::string, double> poses = readPoseCsv(args.poses);
+    std::vector<int> bands;
+    for (const fs::path& image : images) {
+      const auto it = poses.find(image.stem().string());
+      bands.push_back(it == poses.end() ? -1 : yawBandOf(it->second, edges));
+    }
+    addDetectionBands(report, bands, labels, "yaw from " + args.poses.string());
+  }
   const std::string json = formatDetectorEvaluationJson(report, args.calibrate);
   std::cout << (args.json ? json : formatDetectorEvaluationText(report, args.calibrate));
   if (!args.out.empty()) {
@@ -95,8 +115,16 @@ void addDetectCommand(CLI::App& root) {
                    "Folder of images, or a list file with one image path per line")
       ->required();
   command->add_option("--truth-dir", args->truthDir,
-                      "Folder of the truth STEM.pts (.ljson, .csv; 68 or 25 points); default: "
-                      "beside each image");
+                      "Folder of the truth STEM.pts (.ljson, .csv; 68 or 25 points, or another "
+                      "scheme such as AFLW's 21, whose visible points' box the face's box must "
+                      "hold the centre of); default: beside each image");
+  command->add_option("--poses", args->poses,
+                      "CSV with columns image,yaw_deg (e.g. AFLW's index.csv): also count per "
+                      "|yaw| band");
+  command
+      ->add_option("--yaw-bands", args->yawBands,
+                   "With --poses: edges of the |yaw| bands in degrees, ascending")
+      ->capture_default_str();
   args->detectors = {"all"};
   command
       ->add_option("--detector", args->detectors,
@@ -112,6 +140,30 @@ void addDetectCommand(CLI::App& root) {
                    "search images reduced to this larger side (0 = full size)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100000));
+  command
+      ->add_option("--border", args->settings.detector.borderShare,
+                   "search each image inside a grey border of this share of its larger side")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--min-neighbours", args->settings.detector.minNeighbours,
+                   "cascade: raw detections a box needs")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 50));
+  command
+      ->add_option("--profile-min-neighbours", args->settings.detector.profileMinNeighbours,
+                   "cascade: raw detections a profile box needs")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 50));
+  command
+      ->add_option("--profile-cascade", args->settings.detector.profileCascade,
+                   "cascade: the profile cascade file (relative to /usr/share/opencv4 or "
+                   "absolute)")
+      ->capture_default_str();
+  command
+      ->add_option("--second-profile-cascade", args->settings.detector.secondProfileCascade,
+                   "cascade: a second profile cascade run beside the first (empty: none)")
+      ->capture_default_str();
   CLI::Option* noProfiles = command->add_flag("!--no-profiles", args->settings.detector.profiles,
                                               "cascade: frontal cascade only");
   command

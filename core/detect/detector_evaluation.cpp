@@ -154,17 +154,36 @@ json calibrationJson(const CalibrationEstimate& e, bool profile) {
 
 }  // namespace
 
+Eigen::Vector2d TruthFace::anchor() const {
+  if (hasEyes()) return eyeMid;
+  return {visibleBox.x + 0.5 * visibleBox.width, visibleBox.y + 0.5 * visibleBox.height};
+}
+
 TruthFace readTruthFace(const fs::path& path) {
-  const LandmarkSet raw = readLandmarks(path);
+  LandmarkSet raw = readLandmarks(path);
   TruthFace face;
-  if (raw.size() == 68) {
-    face.points = ibug68ToThesis25(raw);
-  } else if (raw.size() == 25) {
-    face.points = raw;
-  } else {
-    throwInputError(path, "has " + std::to_string(raw.size()) +
-                              " points; a truth needs the 68 iBUG or the 25 thesis points");
+  // AFLW writes an invisible point as "-1 -1" (1-based), read as (-2, -2): such a point is missing.
+  if (path.extension() == ".pts" && raw.size() != 68 && raw.size() != 25) {
+    for (int i = 0; i < raw.size(); ++i) {
+      if (raw.has(i) && raw.point(i).x() == -2.0 && raw.point(i).y() == -2.0) raw.setMissing(i);
+    }
   }
+  double minX = std::numeric_limits<double>::infinity(), minY = minX;
+  double maxX = -minX, maxY = -minX;
+  for (int i = 0; i < raw.size(); ++i) {
+    if (!raw.has(i)) continue;
+    const Eigen::Vector3d p = raw.point(i);
+    minX = std::min(minX, p.x());
+    maxX = std::max(maxX, p.x());
+    minY = std::min(minY, p.y());
+    maxY = std::max(maxY, p.y());
+  }
+  if (raw.presentCount() < 2 || !(maxX > minX) || !(maxY > minY)) {
+    throwInputError(path, "has fewer than 2 present points spanning a box; a truth needs a face");
+  }
+  face.visibleBox = cv::Rect2d(minX, minY, maxX - minX, maxY - minY);
+  if (raw.size() != 68 && raw.size() != 25) return face;  // another scheme: the box alone
+  face.points = raw.size() == 68 ? ibug68ToThesis25(raw) : raw;
   const auto [a, b] = Scheme::thesis25().normalisationPair();
   if (!face.points.has(a) || !face.points.has(b)) {
     throwInputError(path, "an eye centre is missing (iBUG 37-42 and 43-48 are needed)");
@@ -234,7 +253,7 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
     settings.allow({"min_face_size", "max_image_side", "cascade_profiles",
                     "cascade_profiles_everywhere", "cascade_dlib_fallback",
                     "cascade_dlib_agreement", "dlib_threshold", "frontal_yaw_deg",
-                    "calibration_target", "vertical_fov_deg", "with_model"});
+                    "calibration_target", "vertical_fov_deg", "with_model", "band_source"});
     settings.rejectUnknown();
   }
   const JsonValue& detectors = report.array("detectors");
@@ -243,7 +262,8 @@ CalibrationSet readCalibrationSet(const fs::path& path) {
   set.label = path.filename().string();
   for (std::size_t i = 0; i < detectors.size(); ++i) {
     JsonFields d(detectors[i], source, report.name("detectors") + "[" + std::to_string(i) + "]");
-    d.allow({"images", "found", "no_face", "wrong_face", "median_ms", "p90_ms", "start_error"});
+    d.allow({"images", "found", "no_face", "wrong_face", "median_ms", "p90_ms", "start_error",
+             "bands"});
     const std::string name = d.requiredString("detector");
     DetectorKind kind{};
     try {
@@ -318,20 +338,21 @@ DetectorEvaluationReport evaluateDetectors(
     const TruthFace truth = readTruthFace(truths[i]);
     const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings.verticalFovDeg);
     TruthPose pose;
-    if (model) {
+    if (model && truth.hasEyes()) {
       try {
         pose = truthPose(*model, camera, truth, settings);
       } catch (const InputError& e) {
         throwInputError(truths[i], e.what());
       }
     }
-    const bool toMeanShape = model && settings.calibrationTarget == CalibrationTarget::MeanShape;
+    const bool toMeanShape =
+        model && truth.hasEyes() && settings.calibrationTarget == CalibrationTarget::MeanShape;
     const Eigen::Vector2d calibrationEyeMid = toMeanShape ? pose.eyeMid : truth.eyeMid;
     std::string line;
     for (std::size_t d = 0; d < detectors.size(); ++d) {
       ImageDetection result;
       result.image = images[i];
-      result.iod = model ? pose.iodFrontal : truth.iod;
+      result.iod = model && truth.hasEyes() ? pose.iodFrontal : truth.iod;
       result.yawDeg = pose.yawDeg;
       const auto begin = std::chrono::steady_clock::now();
       const std::vector<FaceBox> boxes = detectors[d].detect(image);
@@ -339,26 +360,28 @@ DetectorEvaluationReport evaluateDetectors(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
               .count();
       result.boxes = static_cast<int>(boxes.size());
+      result.firstProfile = !boxes.empty() && boxes.front().profile;
       double nearest = std::numeric_limits<double>::infinity();
       int nearestIndex = -1;
       for (std::size_t b = 0; b < boxes.size(); ++b) {
         const cv::Rect2d& r = boxes[b].box;
         const Eigen::Vector2d centre(r.x + 0.5 * r.width, r.y + 0.5 * r.height);
-        const double distance = (centre - truth.eyeMid).norm();
+        const double distance = (centre - truth.anchor()).norm();
         if (distance < nearest) {
           nearest = distance;
           nearestIndex = static_cast<int>(b);
         }
       }
+      const Eigen::Vector2d anchor = truth.anchor();
       if (nearestIndex >= 0 && boxes[static_cast<std::size_t>(nearestIndex)].box.contains(
-                                   cv::Point2d(truth.eyeMid.x(), truth.eyeMid.y()))) {
+                                   cv::Point2d(anchor.x(), anchor.y()))) {
         result.annotated = nearestIndex;
         result.box = boxes[static_cast<std::size_t>(nearestIndex)];
         const cv::Rect2d& r = result.box.box;
         result.offsetX = (calibrationEyeMid.x() - (r.x + 0.5 * r.width)) / r.width *
                          (result.box.mirrored ? -1.0 : 1.0);
         result.offsetY = (calibrationEyeMid.y() - (r.y + 0.5 * r.height)) / r.width;
-        if (model) {
+        if (model && truth.hasEyes()) {
           for (const CalibrationSet& set : sets) {
             result.startErrors.push_back(startError(
                 *model, camera, result.box, set.get(result.box.detector, result.box.profile), truth,
@@ -418,6 +441,40 @@ DetectorEvaluationReport evaluateDetectors(
   return report;
 }
 
+void addDetectionBands(DetectorEvaluationReport& report, const std::vector<int>& bandOfImage,
+                       const std::vector<std::string>& labels, const std::string& source) {
+  report.bandSource = source;
+  for (DetectorEvaluation& evaluation : report.detectors) {
+    if (bandOfImage.size() != evaluation.images.size()) {
+      throw InputError("detection bands: " + std::to_string(bandOfImage.size()) +
+                       " band indices for " + std::to_string(evaluation.images.size()) + " images");
+    }
+    evaluation.bands.assign(labels.size(), DetectionBand{});
+    std::vector<std::vector<double>> times(labels.size());
+    for (std::size_t b = 0; b < labels.size(); ++b) evaluation.bands[b].label = labels[b];
+    for (std::size_t i = 0; i < evaluation.images.size(); ++i) {
+      ImageDetection& image = evaluation.images[i];
+      image.band = bandOfImage[i];
+      if (image.band < 0) continue;
+      if (image.band >= static_cast<int>(labels.size())) {
+        throw InputError("detection bands: band " + std::to_string(image.band) + " of " +
+                         image.image.string() + " is not one of the " +
+                         std::to_string(labels.size()) + " bands");
+      }
+      DetectionBand& band = evaluation.bands[static_cast<std::size_t>(image.band)];
+      ++band.images;
+      band.found += image.found() ? 1 : 0;
+      band.noFace += image.noFace() ? 1 : 0;
+      band.wrongFace += image.wrongFace() ? 1 : 0;
+      band.profileFirst += image.firstProfile ? 1 : 0;
+      times[static_cast<std::size_t>(image.band)].push_back(image.milliseconds);
+    }
+    for (std::size_t b = 0; b < labels.size(); ++b) {
+      evaluation.bands[b].medianMilliseconds = median(times[b]);
+    }
+  }
+}
+
 std::string formatDetectorEvaluationText(const DetectorEvaluationReport& report,
                                          bool withCalibration) {
   std::ostringstream out;
@@ -437,6 +494,20 @@ std::string formatDetectorEvaluationText(const DetectorEvaluationReport& report,
     out << detectorKindName(e.detector) << " | " << e.images.size() << " | " << e.found << " | "
         << e.noFace << " | " << e.wrongFace << " | " << std::setprecision(1) << e.medianMilliseconds
         << " | " << e.p90Milliseconds << '\n';
+  }
+  bool anyBands = false;
+  for (const DetectorEvaluation& e : report.detectors) anyBands |= !e.bands.empty();
+  if (anyBands) {
+    out << "by |yaw| band (" << report.bandSource << "):\n";
+    out << "detector | |yaw| | images | found | no face | wrong face | profile box first | median "
+           "ms\n";
+    for (const DetectorEvaluation& e : report.detectors) {
+      for (const DetectionBand& b : e.bands) {
+        out << detectorKindName(e.detector) << " | " << b.label << " | " << b.images << " | "
+            << b.found << " | " << b.noFace << " | " << b.wrongFace << " | " << b.profileFirst
+            << " | " << std::setprecision(1) << b.medianMilliseconds << '\n';
+      }
+    }
   }
   if (withCalibration) {
     out << "box calibration (medians; frontal boxes on faces within " << std::setprecision(0)
@@ -497,6 +568,7 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
        report.settings.calibrationTarget == CalibrationTarget::MeanShape ? "mean-shape" : "eyes"},
       {"vertical_fov_deg", report.settings.verticalFovDeg},
       {"with_model", report.withModel}};
+  if (!report.bandSource.empty()) j["settings"]["band_source"] = report.bandSource;
   j["detectors"] = json::array();
   for (const DetectorEvaluation& e : report.detectors) {
     json d = {{"detector", detectorKindName(e.detector)},
@@ -509,6 +581,18 @@ std::string formatDetectorEvaluationJson(const DetectorEvaluationReport& report,
     if (withCalibration) {
       d["calibration"] = {{"frontal", calibrationJson(e.frontal, false)},
                           {"profile", calibrationJson(e.profile, true)}};
+    }
+    if (!e.bands.empty()) {
+      d["bands"] = json::array();
+      for (const DetectionBand& b : e.bands) {
+        d["bands"].push_back({{"band", b.label},
+                              {"images", b.images},
+                              {"found", b.found},
+                              {"no_face", b.noFace},
+                              {"wrong_face", b.wrongFace},
+                              {"profile_first", b.profileFirst},
+                              {"median_ms", number(b.medianMilliseconds)}});
+      }
     }
     if (!e.startErrors.empty()) {
       d["start_error"] = json::array();

@@ -23,15 +23,25 @@
 namespace clm3d {
 
 // The annotated face of a truth landmark file: 68 iBUG points (converted to the thesis's 25) or 25
-// thesis points; the eye centres are thesis points 8 and 11 (the means of iBUG 36-41 and 42-47).
+// thesis points, whose eye centres are thesis points 8 and 11 (the means of iBUG 36-41 and 42-47);
+// or the points of another scheme (AFLW's 21, where a turned head hides an eye), which give only
+// the box around their visible points.
 struct TruthFace {
-  LandmarkSet points;  // thesis25 order, 2D pixels (0-based)
+  LandmarkSet points;  // thesis25 order, 2D pixels (0-based); empty for another scheme
   Eigen::Vector2d eyeMid = Eigen::Vector2d::Zero();
-  double iod = 0.0;  // distance between the eye centres, pixels
+  double iod = 0.0;  // distance between the eye centres, pixels; 0 for another scheme
+  // The box around the file's present points, pixels (AFLW's "-1 -1" invisible points left out).
+  cv::Rect2d visibleBox;
+
+  bool hasEyes() const { return iod > 0.0; }
+  // The point a detector's box must hold to be this face: the eye midpoint, or for a truth of
+  // another scheme the centre of visibleBox.
+  Eigen::Vector2d anchor() const;
 };
 
-// Reads a truth file (.pts, .ljson, .csv). InputError naming the file when it cannot be read, does
-// not hold 68 or 25 points, or lacks an eye centre.
+// Reads a truth file (.pts, .ljson, .csv). 68 or 25 points: the eye centres are needed. Any other
+// count: at least 2 present points (a .pts point written "-1 -1", AFLW's mark of an invisible
+// point, is missing). InputError naming the file when it cannot be read or lacks what is needed.
 TruthFace readTruthFace(const std::filesystem::path& path);
 
 // A named set of box calibrations, for the start error: the built-in one (boxCalibration) with
@@ -76,7 +86,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // One photo seen by one detector.
 struct ImageDetection {
   std::filesystem::path image;
-  int boxes = 0;       // boxes the detector returned
+  int boxes = 0;              // boxes the detector returned
+  bool firstProfile = false;  // the best box is a profile box
   int annotated = -1;  // the box nearest the truth's eye midpoint, if it contains it; else -1
   FaceBox box;         // that box (valid when annotated >= 0)
   // The truth's eye midpoint - the box centre, in box widths (x negated for mirrored boxes).
@@ -86,6 +97,7 @@ struct ImageDetection {
   double iod = 0.0;                 // true eye distance, pixels (frontal one with a model)
   double yawDeg = kNaN;             // the truth's yaw (with a model)
   std::vector<double> startErrors;  // per calibration set (with a model and a found face)
+  int band = -1;                    // its |yaw| band (addDetectionBands), -1: none
 
   bool found() const { return annotated >= 0; }
   bool noFace() const { return boxes == 0; }
@@ -108,6 +120,17 @@ struct StartErrorSummary {
   double median = kNaN;
 };
 
+// One detector's counts over the images of one |yaw| band (addDetectionBands).
+struct DetectionBand {
+  std::string label;  // e.g. "60-90"
+  int images = 0;
+  int found = 0;
+  int noFace = 0;
+  int wrongFace = 0;
+  int profileFirst = 0;  // images whose best box is a profile box
+  double medianMilliseconds = kNaN;
+};
+
 struct DetectorEvaluation {
   DetectorKind detector = DetectorKind::Cascade;
   std::vector<ImageDetection> images;
@@ -119,12 +142,14 @@ struct DetectorEvaluation {
   CalibrationEstimate frontal;  // frontal boxes on faces within frontalYawDeg
   CalibrationEstimate profile;  // profile boxes (x offsets of mirrored boxes negated)
   std::vector<StartErrorSummary> startErrors;  // per calibration set
+  std::vector<DetectionBand> bands;            // per |yaw| band (addDetectionBands)
 };
 
 struct DetectorEvaluationReport {
   DetectorEvaluationSettings settings;
   bool withModel = false;
   std::vector<DetectorEvaluation> detectors;
+  std::string bandSource;  // where the bands' yaws came from (e.g. the poses CSV)
 };
 
 // The truth file of each image: STEM.pts / .ljson / .csv in truthDir, or beside the image when
@@ -145,6 +170,12 @@ DetectorEvaluationReport evaluateDetectors(const std::vector<std::filesystem::pa
                                            const std::vector<CalibrationSet>& calibrations = {},
                                            const ProgressCallback& progress = {},
                                            const CancelToken* cancel = nullptr);
+
+// Counts every detector's results per |yaw| band: bandOfImage holds each image's band index (in
+// evaluateDetectors' order; -1: in no band), labels the bands' names. InputError when the counts
+// do not match or an index is out of range.
+void addDetectionBands(DetectorEvaluationReport& report, const std::vector<int>& bandOfImage,
+                       const std::vector<std::string>& labels, const std::string& source);
 
 // The report as a text table (calibration figures when withCalibration) and as JSON (readable by
 // readCalibrationSet).

@@ -107,11 +107,17 @@ void FaceDetectorSettings::validate() const {
     throw InputError("face detector: scaleFactor must be in (1, 2]");
   }
   if (minNeighbours < 1) throw InputError("face detector: minNeighbours must be at least 1");
+  if (profileMinNeighbours < 1) {
+    throw InputError("face detector: profileMinNeighbours must be at least 1");
+  }
   if (!(overlapIou > 0.0 && overlapIou <= 1.0)) {
     throw InputError("face detector: overlapIou must be in (0, 1]");
   }
   if (!(frontalPreference >= 1.0 && std::isfinite(frontalPreference))) {
     throw InputError("face detector: frontalPreference must be at least 1");
+  }
+  if (!(borderShare >= 0.0 && borderShare <= 1.0)) {
+    throw InputError("face detector: borderShare must be in [0, 1]");
   }
   if (maxImageSide != 0 && maxImageSide < 64) {
     throw InputError("face detector: maxImageSide must be 0 (off) or at least 64 pixels");
@@ -166,6 +172,7 @@ std::vector<FaceBox> rankByAgreement(const std::vector<FaceBox>& cascade, std::v
 struct FaceDetector::Impl {
   cv::CascadeClassifier frontal;
   cv::CascadeClassifier profile;
+  cv::CascadeClassifier secondProfile;  // empty when secondProfileCascade is
   // Loaded for DlibHog, and for Cascade with dlibFallback or dlibAgreement when the build has dlib.
   std::unique_ptr<detail::DlibHogDetector> hog;
   int profileRegions = 0;  // of the last detect()
@@ -184,9 +191,9 @@ struct FaceDetector::Impl {
     }
     std::vector<cv::Rect> found;
     std::vector<int> neighbours;
-    cascade.detectMultiScale(searched, found, neighbours, settings.scaleFactor,
-                             settings.minNeighbours, 0, cv::Size(minSide, minSide),
-                             cv::Size(maxSide, maxSide));
+    const int needed = isProfile ? settings.profileMinNeighbours : settings.minNeighbours;
+    cascade.detectMultiScale(searched, found, neighbours, settings.scaleFactor, needed, 0,
+                             cv::Size(minSide, minSide), cv::Size(maxSide, maxSide));
     for (std::size_t i = 0; i < found.size(); ++i) {
       FaceBox face;
       cv::Rect2d box(found[i]);
@@ -194,7 +201,7 @@ struct FaceDetector::Impl {
       box.x += region.x;
       box.y += region.y;
       face.box = box;
-      face.score = i < neighbours.size() ? neighbours[i] : settings.minNeighbours;
+      face.score = i < neighbours.size() ? neighbours[i] : needed;
       face.profile = isProfile;
       face.mirrored = mirror;
       face.detector = DetectorKind::Cascade;
@@ -268,8 +275,11 @@ struct FaceDetector::Impl {
     profileRegions = static_cast<int>(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
       for (const bool mirror : {false, true}) {
-        runCascade(profile, grey, regions[r], sides[r].width, sides[r].height, settings, true,
-                   mirror, boxes);
+        for (cv::CascadeClassifier* cascade : {&profile, &secondProfile}) {
+          if (cascade->empty()) continue;
+          runCascade(*cascade, grey, regions[r], sides[r].width, sides[r].height, settings, true,
+                     mirror, boxes);
+        }
       }
     }
   }
@@ -303,6 +313,9 @@ void loadCascades(FaceDetector::Impl& impl, const FaceDetectorSettings& settings
   loadCascade(impl.frontal, cascadePath(cascadeDir, settings.frontalCascade));
   if (settings.profiles)
     loadCascade(impl.profile, cascadePath(cascadeDir, settings.profileCascade));
+  if (settings.profiles && !settings.secondProfileCascade.empty()) {
+    loadCascade(impl.secondProfile, cascadePath(cascadeDir, settings.secondProfileCascade));
+  }
 }
 
 std::vector<FaceBox> searchCascades(FaceDetector::Impl& impl, const cv::Mat& grey,
@@ -411,14 +424,25 @@ std::vector<FaceBox> FaceDetector::detect(const cv::Mat& bgrOrGrey) {
     cv::equalizeHist(grey, equalised);
     grey = equalised;
   }
-  if (grey.cols < settings.minFaceSize || grey.rows < settings.minFaceSize) return {};
-  std::vector<FaceBox> boxes = entryOf(kind_).search(*impl_, grey, settings);
-  if (scale != 1.0) {
-    // Box edges scale exactly with the image (cv::resize keeps the pixel edges aligned).
-    for (FaceBox& box : boxes) {
-      box.box = cv::Rect2d(box.box.x / scale, box.box.y / scale, box.box.width / scale,
-                           box.box.height / scale);
+  std::vector<FaceBox> boxes;
+  if (grey.cols >= settings.minFaceSize && grey.rows >= settings.minFaceSize) {
+    boxes = entryOf(kind_).search(*impl_, grey, settings);
+  }
+  int border = 0;
+  if (boxes.empty() && settings.borderShare > 0.0) {
+    // No face: perhaps one the image cuts off. Searched again inside a grey border.
+    border = static_cast<int>(std::lround(settings.borderShare * std::max(grey.cols, grey.rows)));
+    cv::Mat framed;
+    cv::copyMakeBorder(grey, framed, border, border, border, border, cv::BORDER_CONSTANT,
+                       cv::Scalar(cv::mean(grey)[0]));
+    if (framed.cols >= settings.minFaceSize && framed.rows >= settings.minFaceSize) {
+      boxes = entryOf(kind_).search(*impl_, framed, settings);
     }
+  }
+  for (FaceBox& box : boxes) {
+    // Box edges scale exactly with the image (cv::resize keeps the pixel edges aligned).
+    box.box = cv::Rect2d((box.box.x - border) / scale, (box.box.y - border) / scale,
+                         box.box.width / scale, box.box.height / scale);
   }
   return boxes;
 }

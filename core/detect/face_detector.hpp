@@ -52,7 +52,11 @@ struct FaceDetectorSettings {
   int minFaceSize = 48;  // pixels: the smallest box side searched (dlib: < 64 doubles the image)
   double scaleFactor = 1.1;  // cascade: step between pyramid scales (> 1)
   int minNeighbours = 3;     // cascade: raw detections a box needs (>= 1)
-  bool profiles = true;      // cascade: also run the profile cascade, on the image and its mirror
+  // cascade: raw detections a profile box needs (>= 1). Profile boxes need fewer than frontal ones:
+  // the profile cascades find few real side views with 3, and a false box costs a search that the
+  // model's check then rejects (a fit tries the next face, docs/initialisation.md).
+  int profileMinNeighbours = 1;
+  bool profiles = true;  // cascade: also run the profile cascade, on the image and its mirror
   // cascade: where the profile passes look. false (default): over the whole image only when the
   // frontal cascade found nothing, else around each frontal box (the box grown by
   // kProfileMargin of its side each way, boxes from half to twice its side): a head turned
@@ -65,6 +69,10 @@ struct FaceDetectorSettings {
   // > 0: images whose larger side exceeds this are searched reduced to it (faster on large
   // photos and HD video; faces below max(24, minFaceSize x reduction) reduced pixels are missed)
   int maxImageSide = 0;
+  // > 0: where the image shows no face, it is searched again inside a uniform grey border of this
+  // share of its larger side on every side, so that a face the image cuts off (a close crop, a
+  // head at the frame's edge) is found whole; boxes may then reach outside the image. 0 = off.
+  double borderShare = 0.15;
   double overlapIou = 0.3;  // boxes overlapping more than this merge (the better one is kept)
   // cascade: frontal boxes rank with their score times this, so an overlapping profile box
   // replaces a frontal one only with clearly more support (both fire at 20-50 degrees of yaw)
@@ -82,6 +90,10 @@ struct FaceDetectorSettings {
   // Cascade files, relative to the cascade directory (or absolute).
   std::string frontalCascade = "haarcascades/haarcascade_frontalface_alt2.xml";
   std::string profileCascade = "haarcascades/haarcascade_profileface.xml";
+  // A second profile cascade run beside the first wherever it runs (image and mirror), its boxes
+  // merged with the first's; empty = none. OpenCV's LBP profile cascade finds side views the Haar
+  // one misses (and is about three times faster).
+  std::string secondProfileCascade = "lbpcascades/lbpcascade_profileface.xml";
 
   void validate() const;  // InputError naming the bad setting
 };

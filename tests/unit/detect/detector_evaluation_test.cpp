@@ -235,11 +235,12 @@ TEST(DetectorEvaluation, ErrorsNameTheFile) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.png"), std::string::npos) << e.what();
   }
-  // A truth with neither 68 nor 25 points.
-  test::writeFile(dir / "few.pts", "version: 1\nn_points: 3\n{\n1 1\n2 2\n3 3\n}\n");
+  // A truth of another scheme (AFLW's "-1 -1" marks an invisible point) with one visible point:
+  // no box to hold.
+  test::writeFile(dir / "few.pts", "version: 1\nn_points: 3\n{\n1 1\n-1 -1\n-1 -1\n}\n");
   try {
     readTruthFace(dir / "few.pts");
-    FAIL() << "no error for a 3-point truth";
+    FAIL() << "no error for a truth with one visible point";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("few.pts"), std::string::npos) << e.what();
   }
