@@ -3,7 +3,8 @@
 // ground truth, the per-frame landmark visibility and a description of how it was made. All work is
 // done by core (eval/synthetic_sequence, dataset/training_subjects for the head). Ctrl-C cancels
 // cleanly. With --photo, the sequence is an annotated photo moving in the image plane instead
-// (core/eval/photo_sequence).
+// (core/eval/photo_sequence), or with --yaw-range its face profiled and turned in 3D
+// (core/profile/turned_photo_sequence).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -24,8 +25,12 @@
 #include "app/commands/scan_options.hpp"
 #include "core/common/error.hpp"
 #include "core/dataset/training_subjects.hpp"
+#include "core/eval/photo_pair_sequence.hpp"
 #include "core/eval/photo_sequence.hpp"
 #include "core/eval/synthetic_sequence.hpp"
+#include "core/profile/dense_face.hpp"
+#include "core/profile/turned_photo_sequence.hpp"
+#include "core/scheme/landmark_file.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/viz/image_file.hpp"
 
@@ -65,7 +70,19 @@ struct SynthArgs {
   std::uint64_t seed = PhotoSequenceSettings{}.seed;
   double photoRoll = PhotoSequenceSettings{}.rotationDeg;
   std::string photoZoom = "0.85:1.15";  // PhotoSequenceSettings' 1 +- 0.15
+  fs::path beside;                      // --beside: a second photo in the right half
+  fs::path besideLandmarks;             // its points
+  fs::path denseModel;
+  fs::path denseVertices;
+  int denseModes = IctDenseSettings{}.identityModes;
+  std::optional<std::uint64_t> denseHeadSeed;
+  fs::path contactSheet;
+  int sheetFrames = 11;
   const CLI::Option* sizeOption = nullptr;
+  const CLI::Option* yawOption = nullptr;
+  const CLI::Option* pitchOption = nullptr;
+  std::vector<const CLI::Option*>
+      movingPhotoOptions;  // --frames, --seed, --photo-roll, --photo-zoom
 };
 
 // "A:B" or "A" (= "A:A"), degrees; nullopt if malformed.
@@ -215,6 +232,167 @@ SequenceSettings toSettings(const SynthArgs& args) {
 // Progress lines on stderr at every 10% (CliProgress), for sequences of 30 frames or more.
 constexpr int kProgressFrames = 30;
 
+// --photo with --yaw-range: the photo's face profiled and turned in 3D.
+void runTurnedPhotoSynth(const SynthArgs& args) {
+  for (const CLI::Option* option : args.movingPhotoOptions) {
+    if (option->count() > 0) {
+      throw CLI::ValidationError(option->get_name(),
+                                 "moves the photo in the image plane; with --yaw-range the face "
+                                 "turns in 3D instead, leave it out");
+    }
+  }
+  if (args.sizeOption != nullptr && args.sizeOption->count() > 0) {
+    throw CLI::ValidationError("--size", "a turned photo keeps the photo's size");
+  }
+  if (!args.beside.empty()) {
+    throw CLI::ValidationError("--beside",
+                               "pairs photos moving in the image plane; a turned "
+                               "photo is one face");
+  }
+  if (args.denseHeadSeed && !args.denseModel.empty()) {
+    throw CLI::ValidationError("--dense-head-seed",
+                               "give --dense-model or --dense-head-seed, not both");
+  }
+  if (!args.denseHeadSeed && (args.denseModel.empty() || args.denseVertices.empty())) {
+    throw CLI::ValidationError(
+        "--dense-model/--dense-vertices",
+        "turning a photo needs the dense face: --dense-model (ICT-FaceKit archive or folder) and "
+        "--dense-vertices (its thesis25 vertex table, tests/fixtures/ict-facekit/"
+        "thesis25_vertices.json), or --dense-head-seed N (a procedural head's own mesh)");
+  }
+  TurnedPhotoSettings settings;
+  const auto yaw = parseRange(args.yawRange);
+  settings.yawFromDeg = yaw->first;
+  settings.yawToDeg = yaw->second;
+  settings.keepPhotoPitch = args.pitchOption == nullptr || args.pitchOption->count() == 0;
+  if (!settings.keepPhotoPitch) {
+    const auto pitch = parseRange(args.pitchRange);
+    settings.pitchFromDeg = pitch->first;
+    settings.pitchToDeg = pitch->second;
+  }
+  settings.stepDeg = args.step;
+  settings.order = args.sweep ? SequenceOrder::Sweep : SequenceOrder::Range;
+  settings.verticalFovDeg = args.fov;
+  settings.fps = args.fps;
+  settings.profile.supersample = args.supersample;
+  settings.sheetFrames = args.contactSheet.empty() ? 0 : args.sheetFrames;
+  settings.validate();
+  if (!args.denseHeadSeed && !fs::exists(args.denseModel)) {
+    throwInputError(args.denseModel, "file not found");
+  }
+  const cv::Mat photo = readImage(args.photo);
+  const LandmarkSet points = readLandmarks(args.landmarks, &Scheme::thesis25());
+  if (points.presentCount() < 4) {
+    throwInputError(args.landmarks, "has " + std::to_string(points.presentCount()) +
+                                        " thesis25 points; a profile needs at least 4");
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  InterruptScope interrupt;
+  DenseFace face;
+  std::string denseName;
+  if (args.denseHeadSeed) {
+    // A procedural head's own mesh, no modes: for trying the mode out without the ICT model
+    // (the photo should then be of that head).
+    ProceduralSource source;
+    source.textureSize = args.textureSize;
+    source.faceStepDegrees = args.faceStep;
+    const TexturedSubject head = makeProceduralSubject(*args.denseHeadSeed, "neutral", source);
+    face = denseFaceFromMesh(head.mesh, head.landmarks);
+    denseName = "procedural head " + std::to_string(*args.denseHeadSeed);
+  } else {
+    const std::vector<int> vertices =
+        readLandmarkVertexTable(args.denseVertices, "thesis25", Scheme::thesis25().size());
+    IctDenseSettings dense;
+    dense.identityModes = args.denseModes;
+    try {
+      face = denseFaceFromIct(
+          loadIctMeshModel(args.denseModel, vertices, args.denseVertices, {}, &interrupt.token()),
+          dense);
+    } catch (const Cancelled&) {
+      throw Error("cancelled, no sequence written");
+    }
+    denseName = args.denseModel.string();
+  }
+  const double loadSeconds = elapsed();
+  const int frames = static_cast<int>(sequenceAngles([&] {
+                                        SequenceSettings angles;
+                                        angles.yawFromDeg = settings.yawFromDeg;
+                                        angles.yawToDeg = settings.yawToDeg;
+                                        angles.pitchFromDeg =
+                                            settings.keepPhotoPitch ? 0.0 : settings.pitchFromDeg;
+                                        angles.pitchToDeg =
+                                            settings.keepPhotoPitch ? 0.0 : settings.pitchToDeg;
+                                        angles.stepDeg = settings.stepDeg;
+                                        angles.order = settings.order;
+                                        return angles;
+                                      }())
+                                          .size());
+  CliProgress progress(CliProgress::Style::Tenths, frames < kProgressFrames, "synth");
+  const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
+  TurnedPhotoSummary summary;
+  try {
+    summary = writeTurnedPhotoSequence(face, photo, points, settings,
+                                       {args.photo.string(), args.landmarks.string(), denseName},
+                                       files, progress.callback(), &interrupt.token());
+  } catch (const Cancelled&) {
+    throw Error("cancelled, no sequence written");
+  }
+  interrupt.release();
+  if (!args.contactSheet.empty()) writeImage(args.contactSheet, summary.contactSheet);
+  const PhotoProfile& profile = summary.profile;
+  std::cout << std::fixed << std::setprecision(1) << "synth: " << summary.frames << " frames "
+            << summary.frameSize.width << "x" << summary.frameSize.height << " of "
+            << args.photo.string() << " turned, yaw " << settings.yawFromDeg << ".."
+            << settings.yawToDeg << ", step " << settings.stepDeg
+            << " deg; profile: " << profile.pointsFitted << " points fitted, rms "
+            << std::setprecision(2) << profile.rmsPixels << " px, photo pose yaw "
+            << std::setprecision(1) << degrees(profile.pose.yaw) << " pitch "
+            << degrees(profile.pose.pitch) << " roll " << degrees(profile.pose.roll) << ", "
+            << std::setprecision(0) << 100.0 * profile.mirroredShare << "% of triangles mirrored, "
+            << 100.0 * profile.backgroundShare << "% on the background; " << summary.hiddenPoints
+            << " hidden landmark-frames -> " << files.video.string()
+            << " (+ truth.csv, truth-visibility.csv, sequence.json) in " << std::setprecision(1)
+            << elapsed() << " s (dense face " << loadSeconds << " s)\n";
+}
+
+// --photo with --beside: two photos side by side, each moving on its own trajectory.
+void runPhotoPairSynth(const SynthArgs& args, const PhotoSequenceSettings& settings,
+                       const cv::Mat& left, const LandmarkSet& leftPoints) {
+  if (args.beside.empty() || args.besideLandmarks.empty()) {
+    throw CLI::ValidationError("--beside",
+                               "a second photo needs both --beside and "
+                               "--beside-landmarks");
+  }
+  const cv::Mat right = readImage(args.beside);
+  const LandmarkSet rightPoints = readPhotoPoints(args.besideLandmarks);
+  const auto start = std::chrono::steady_clock::now();
+  InterruptScope interrupt;
+  CliProgress progress(CliProgress::Style::Tenths, settings.frames < kProgressFrames, "synth");
+  const SequenceFiles files = SequenceFiles::inFolder(args.out, "." + args.format);
+  PhotoPairSummary summary;
+  try {
+    summary = writePhotoPairSequence(left, leftPoints, right, rightPoints, settings,
+                                     {args.photo.string(), args.landmarks.string()},
+                                     {args.beside.string(), args.besideLandmarks.string()}, files,
+                                     progress.callback(), &interrupt.token());
+  } catch (const Cancelled&) {
+    throw Error("cancelled, no sequence written");
+  }
+  interrupt.release();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "synth: " << summary.frames << " frames " << summary.frameSize.width << "x"
+            << summary.frameSize.height << " of " << args.photo.string() << " (seed "
+            << settings.seed << ") beside " << args.beside.string() << " (seed "
+            << settings.seed + 1 << ") -> " << files.video.string()
+            << " (+ truth.csv with a face column, sequence.json) in " << std::fixed
+            << std::setprecision(1) << seconds << " s\n";
+}
+
 // --photo: the photo moving in the image plane, its landmarks moved with it.
 void runPhotoSynth(const SynthArgs& args) {
   if (!args.mesh.empty() || args.headSeed) {
@@ -225,6 +403,13 @@ void runPhotoSynth(const SynthArgs& args) {
   }
   if (!args.expression.empty()) {
     throw CLI::ValidationError("--expression", "applies to procedural heads (--head-seed) only");
+  }
+  if (args.yawOption != nullptr && args.yawOption->count() > 0) {
+    runTurnedPhotoSynth(args);
+    return;
+  }
+  if (args.pitchOption != nullptr && args.pitchOption->count() > 0) {
+    throw CLI::ValidationError("--pitch-range", "with --photo, give --yaw-range too");
   }
   PhotoSequenceSettings settings;
   settings.frames = args.frames;
@@ -247,6 +432,10 @@ void runPhotoSynth(const SynthArgs& args) {
   settings.validate();
   const cv::Mat photo = readImage(args.photo);
   const LandmarkSet points = readPhotoPoints(args.landmarks);
+  if (!args.beside.empty() || !args.besideLandmarks.empty()) {
+    runPhotoPairSynth(args, settings, photo, points);
+    return;
+  }
 
   const auto start = std::chrono::steady_clock::now();
   InterruptScope interrupt;
@@ -360,17 +549,44 @@ void addSynthCommand(CLI::App& root) {
   cmd->add_option("--photo", args->photo,
                   "Use this annotated photo moving in the image plane (translation, scale, "
                   "rotation, brightness, contrast) instead of a head turning");
-  cmd->add_option("--frames", args->frames, "With --photo: number of frames")
-      ->check(CLI::Range(1, 100000))
+  args->movingPhotoOptions.push_back(
+      cmd->add_option("--frames", args->frames, "With --photo: number of frames")
+          ->check(CLI::Range(1, 100000))
+          ->capture_default_str());
+  args->movingPhotoOptions.push_back(
+      cmd->add_option("--seed", args->seed, "With --photo: seed of the random smooth motion")
+          ->capture_default_str());
+  args->movingPhotoOptions.push_back(
+      cmd->add_option("--photo-roll", args->photoRoll,
+                      "With --photo: largest in-plane rotation of the face, degrees either way")
+          ->check(CLI::Range(0.0, 180.0))
+          ->capture_default_str());
+  args->movingPhotoOptions.push_back(
+      cmd->add_option("--photo-zoom", args->photoZoom,
+                      "With --photo: SMALLEST:LARGEST relative size of the face (e.g. 0.6:1.6)")
+          ->capture_default_str());
+  cmd->add_option("--beside", args->beside,
+                  "With --photo: a second annotated photo in the right half, moving on its own "
+                  "trajectory (seed + 1); the truth has a face column (0 left, 1 right)");
+  cmd->add_option("--beside-landmarks", args->besideLandmarks, "With --beside: its points");
+  cmd->add_option("--dense-model", args->denseModel,
+                  "With --photo and --yaw-range: the dense face fitted to the photo's points "
+                  "(ICT-FaceKit archive or folder)");
+  cmd->add_option("--dense-vertices", args->denseVertices,
+                  "With --dense-model: its thesis25 landmark vertex table "
+                  "(tests/fixtures/ict-facekit/thesis25_vertices.json)");
+  cmd->add_option("--dense-head-seed", args->denseHeadSeed,
+                  "With --photo and --yaw-range, instead of --dense-model: the procedural head of "
+                  "this seed as the dense face (its own mesh, no modes; a photo of that head)");
+  cmd->add_option("--contact-sheet", args->contactSheet,
+                  "With --photo and --yaw-range: also write a contact sheet (PNG) of the photo and "
+                  "--sheet-frames frames with their visible truth points");
+  cmd->add_option("--sheet-frames", args->sheetFrames, "Frames on the contact sheet")
+      ->check(CLI::Range(1, 64))
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "With --photo: seed of the random smooth motion")
-      ->capture_default_str();
-  cmd->add_option("--photo-roll", args->photoRoll,
-                  "With --photo: largest in-plane rotation of the face, degrees either way")
-      ->check(CLI::Range(0.0, 180.0))
-      ->capture_default_str();
-  cmd->add_option("--photo-zoom", args->photoZoom,
-                  "With --photo: SMALLEST:LARGEST relative size of the face (e.g. 0.6:1.6)")
+  cmd->add_option("--dense-modes", args->denseModes,
+                  "With --dense-model: identity components fitted (the model has 100)")
+      ->check(CLI::Range(0, 100))
       ->capture_default_str();
   cmd->add_option("--up", args->up, "The scan file's up axis")->capture_default_str();
   cmd->add_option("--front", args->front, "The scan file's axis out of the face")
@@ -392,15 +608,19 @@ void addSynthCommand(CLI::App& root) {
   cmd->add_option("--face-step", args->faceStep, "Procedural head's mesh step in degrees")
       ->check(CLI::Range(0.3, 3.0))
       ->capture_default_str();
-  cmd->add_option("--yaw-range", args->yawRange,
-                  "Yaw FROM:TO in degrees, either direction (positive: nose towards image +x); "
-                  "write --yaw-range=-60:0 for a negative start")
-      ->check(rangeValidator(180.0))
-      ->capture_default_str();
-  cmd->add_option("--pitch-range", args->pitchRange,
-                  "Pitch FROM:TO in degrees (positive: nose down), or one fixed value")
-      ->check(rangeValidator(90.0))
-      ->capture_default_str();
+  args->yawOption =
+      cmd->add_option("--yaw-range", args->yawRange,
+                      "Yaw FROM:TO in degrees, either direction (positive: nose towards image "
+                      "+x); write --yaw-range=-60:0 for a negative start. With --photo: turn the "
+                      "photo's face in 3D through a dense face fitted to its points")
+          ->check(rangeValidator(180.0))
+          ->capture_default_str();
+  args->pitchOption =
+      cmd->add_option("--pitch-range", args->pitchRange,
+                      "Pitch FROM:TO in degrees (positive: nose down), or one fixed value (with "
+                      "--photo --yaw-range: default the photo's own pitch)")
+          ->check(rangeValidator(90.0))
+          ->capture_default_str();
   cmd->add_option("--roll", args->roll, "Fixed roll in degrees")
       ->check(CLI::Range(-180.0, 180.0))
       ->capture_default_str();

@@ -190,6 +190,42 @@ TEST(SynthPhotoCli, A68PointFileKeepsThePointsWithAFixedCounterpart) {
       << test::readFile(out / "truth.csv");
 }
 
+// --beside puts a second photo in the right half on its own trajectory: two truth rows a frame
+// (face 0 left, face 1 right), each face's points inside its own half, the frame twice as wide;
+// --beside without its points is a usage error naming the option.
+TEST(SynthPhotoCli, BesideGivesTwoFacesEachInItsHalf) {
+  const PhotoFiles& f = photoFiles();
+  const fs::path out = f.dir / "pair";
+  const std::string base = "synth --photo " + f.photo.string() + " --landmarks " +
+                           f.points.string() + " --frames 5 --beside " + f.photo.string();
+  const auto result =
+      runClm3d(base + " --beside-landmarks " + f.points.string() + " --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "5 frames 644x242")) << result.output;
+  const TrackTable truth = readTrackTable(out / "truth.csv");
+  ASSERT_EQ(truth.extraColumns, std::vector<std::string>{"face"});
+  ASSERT_EQ(truth.rows.size(), 10U);
+  for (const TrackRow& row : truth.rows) {
+    ASSERT_EQ(row.extraCells.size(), 1U);
+    const bool right = row.extraCells[0] == "1";
+    for (int i = 0; i < 25; ++i) {
+      EXPECT_EQ(row.points(0, i) >= 322.0, right) << "frame " << row.frame << " point " << i;
+    }
+  }
+  // The two faces move on their own trajectories: the right face is not the left one shifted.
+  const Eigen::Matrix2Xd shift = truth.rows[1].points.colwise() - Eigen::Vector2d(322.0, 0.0);
+  EXPECT_GT((shift - truth.rows[0].points).cwiseAbs().maxCoeff(), 0.5);
+  VideoReader video(out / "sequence.avi");
+  cv::Mat frame;
+  ASSERT_TRUE(video.read(frame));
+  EXPECT_EQ(frame.size(), cv::Size(644, 242));
+
+  const auto alone = runClm3d(base + " --out " + (f.dir / "pair-bad").string());
+  EXPECT_EQ(alone.exitCode, 2) << alone.output;
+  EXPECT_TRUE(test::contains(alone.output, "--beside")) << alone.output;
+  EXPECT_FALSE(fs::exists(f.dir / "pair-bad" / "truth.csv"));
+}
+
 TEST(SynthPhotoCli, BadLandmarkFilesExitOneNamingTheFile) {
   const PhotoFiles& f = photoFiles();
   const fs::path absent = f.dir / "absent.pts";
