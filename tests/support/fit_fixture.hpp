@@ -1,12 +1,13 @@
 // A small trained model and rendered scenes with exact truth, for the tests of fitting,
 // initialisation and tracking: procedural heads (seeds 1-4) train a 3-view (yaw -30, 0, +30),
-// 2-scale model with 12x12 patches once per test binary (a few seconds; cached on disk), and a
+// 2-scale model with 12x12 patches once per build (a few seconds; cached on disk), and a
 // scene is a render of one of those heads (or a held-out one) at a known pose with its true
 // landmark positions and the model state nearest to them. Header-only; link clm3d::fit,
 // clm3d::train, clm3d::synth and clm3d::render.
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -78,16 +79,30 @@ inline ClmModel trainFitTestModel(bool singleView) {
 }
 
 // ctest runs every test in its own process, so a model trained per process would be trained once
-// per test (a minute each under ASan). The model is cached beside the test binaries, keyed by the
-// running executable's modification time: relinking (any code change) trains it afresh.
+// per test (a minute each under ASan). The model is cached in the build folder, shared by every
+// test binary of the build (each suite training its own cost the ASan pass several minutes), and
+// keyed by the newest of the core libraries and this header: rebuilding any core stage or
+// changing the fixture here trains it afresh.
+inline std::filesystem::file_time_type fitFixtureStamp(std::error_code& error) {
+  namespace fs = std::filesystem;
+  fs::file_time_type newest = fs::last_write_time(__FILE__, error);
+  if (error) return newest;
+  for (fs::recursive_directory_iterator it(fs::path(CLM3D_BINARY_DIR) / "core", error), end;
+       !error && it != end; it.increment(error)) {
+    const fs::path& file = it->path();
+    if (file.extension() != ".a" && file.extension() != ".so") continue;
+    newest = std::max(newest, fs::last_write_time(file, error));
+  }
+  return newest;
+}
+
 inline ClmModel cachedFitTestModel(bool singleView) {
   namespace fs = std::filesystem;
   std::error_code error;
-  const auto stamp = fs::last_write_time("/proc/self/exe", error);
-  const fs::path cache =
-      fs::path(CLM3D_BINARY_DIR) / "test-cache" /
-      ("fit-fixture-" + fs::read_symlink("/proc/self/exe", error).filename().string() + "-" +
-       std::to_string(stamp.time_since_epoch().count()) + (singleView ? "-2d" : "-3d") + ".clm3d");
+  const auto stamp = fitFixtureStamp(error);
+  const fs::path cache = fs::path(CLM3D_BINARY_DIR) / "test-cache" /
+                         ("fit-fixture-" + std::to_string(stamp.time_since_epoch().count()) +
+                          (singleView ? "-2d" : "-3d") + ".clm3d");
   if (!error && fs::exists(cache)) {
     try {
       return loadModel(cache);
