@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # The real-faces comparison of docs/real-faces.md, in one run: clm3d (rlms and fastncc on the model
 # of resources/datasets/real.json) and dlib's 68-point predictor on the LFPW test photos, from each
-# one's own detector and from the truth; 20 photo sequences made from LFPW test photos; franck.mp4.
+# one's own detector and from the truth; 20 photo sequences made from LFPW test photos; 5 videos of
+# two photos side by side, every face tracked; 5 photos turned -80..80 degrees; franck.mp4.
 #
 # Usage: scripts/real-faces.sh [OUT]   (default real-faces-out; reruns skip what exists)
 # Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
 # PEER_DLIB (the peer_dlib binary of ../shared/tools/peer-dlib; built into OUT when absent),
-# SCORE (../shared/tools/score_68.py), SEQUENCES (20), FRAMES (120).
+# SCORE (../shared/tools/score_68.py), SEQUENCES (20), FRAMES (120), PAIRS (5),
+# TURNED (5).
 # The model trained here inherits LFPW's research-only terms: it is written to OUT, never committed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -134,7 +136,58 @@ for group in image rz_image; do
   "$CLM3D" eval --truth "${truths[@]}" --pred "${preds[@]}" --label clm3d | grep -E "^  (frames|error|convergence)"
 done
 
-# 6. franck.mp4: clm3d's track against dlib on every 10th frame (no truth): the frames as images
+# 6. Two faces: PAIRS videos of two LFPW test photos side by side, each moving on its own
+# trajectory (synth --beside; the photos after the sequences' ones), tracked with --faces all and
+# scored face by face (eval pairs each truth face with the tracked id nearest it).
+PAIRS=${PAIRS:-5}
+echo "== $PAIRS videos of two photos side by side ($FRAMES frames), track --faces all"
+mapfile -t pair_images < <(ls "$TEST"/*.jpg | sed -n "$((SEQUENCES + 1)),$((SEQUENCES + 2 * PAIRS))p")
+pair_truths=(); pair_preds=()
+for ((p = 0; p + 1 < ${#pair_images[@]}; p += 2)); do
+  left=${pair_images[$p]} right=${pair_images[$((p + 1))]}
+  stem=pair_$(basename "${left%.jpg}")_$(basename "${right%.jpg}") seq=$OUT/sequences/$stem
+  [[ -f $seq/truth.csv ]] ||
+    "$CLM3D" synth --photo "$left" --landmarks "${left%.jpg}.pts" --beside "$right" \
+      --beside-landmarks "${right%.jpg}.pts" --frames "$FRAMES" --seed $((100 + p)) \
+      --out "$seq" > /dev/null 2>&1
+  [[ -f $OUT/tracks/$stem.csv ]] ||
+    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --faces all --out "$OUT/tracks/$stem.csv" \
+      --quiet > "$OUT/logs/track-$stem.log" 2>&1
+  pair_truths+=("$seq/truth.csv"); pair_preds+=("$OUT/tracks/$stem.csv")
+  echo "$stem: $(grep -o "[0-9]* detections" "$OUT/logs/track-$stem.log" || echo "? detections")"
+  "$CLM3D" eval --truth "$seq/truth.csv" --pred "$OUT/tracks/$stem.csv" | grep -E "truth face"
+done
+if ((${#pair_preds[@]} > 0)); then
+  echo "two-face videos, pooled over both faces of every video:"
+  "$CLM3D" eval --truth "${pair_truths[@]}" --pred "${pair_preds[@]}" --label clm3d |
+    grep -E "^  (frames|error|convergence)"
+fi
+
+# 7. Turned photos: TURNED LFPW test photos (the last ones) profiled with the ICT dense face and
+# turned -80..80 degrees (synth --photo --yaw-range, 2-degree steps), tracked, scored per |yaw|
+# band over the truth's face box (the truth's own pose).
+TURNED=${TURNED:-5}
+ICT=$DATA/morphable/ict-facekit/ICT-FaceKit_FaceXModel.tar.xz
+if [[ -f $ICT && $TURNED -gt 0 ]]; then
+  echo "== $TURNED photos turned -80..80 degrees (synth --photo --yaw-range), tracked"
+  turned_truths=(); turned_preds=()
+  for img in $(ls "$TEST"/*.jpg | tail -n "$TURNED"); do
+    stem=turn_$(basename "${img%.jpg}") seq=$OUT/sequences/turn_$(basename "${img%.jpg}")
+    [[ -f $seq/truth.csv ]] ||
+      "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --yaw-range=-80:80 --step 2 \
+        --dense-model "$ICT" --dense-vertices tests/fixtures/ict-facekit/thesis25_vertices.json \
+        --out "$seq" > "$OUT/logs/synth-$stem.log" 2>&1
+    [[ -f $OUT/tracks/$stem.csv ]] ||
+      "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
+        > "$OUT/logs/track-$stem.log" 2>&1
+    turned_truths+=("$seq/truth.csv"); turned_preds+=("$OUT/tracks/$stem.csv")
+    echo "$stem: $(grep -o "[0-9]* detections" "$OUT/logs/track-$stem.log" || echo "? detections")"
+  done
+  "$CLM3D" eval --truth "${turned_truths[@]}" --pred "${turned_preds[@]}" --label clm3d \
+    --yaw-bands 0,30,60,90
+fi
+
+# 8. franck.mp4: clm3d's track against dlib on every 10th frame (no truth): the frames as images
 # (clm3d frames), dlib on them, clm3d's points per frame (clm3d truth --pts), paired by file stem.
 FRANCK=$DATA/videos/franck.mp4
 if [[ -f $FRANCK ]]; then
