@@ -71,4 +71,13 @@ stage "release build" bash -c 'cmake --preset release -DCLM3D_WERROR=ON > /dev/n
 stage "package (cpack -G DEB, install into a temporary root, run)" bash scripts/package-test.sh build/release
 rm -f "$slurm_status"
 release_tests_started=1
-stage "release tests (every test)" ctest --preset release -j "$jobs"
+if [ "${CLM3D_SKIP_SANITIZERS:-0}" != "1" ]; then
+  # The unit tests the asan pass ran are not run again: every other test (command line, GUI,
+  # real faces, benchmarks, Slurm) and the unit tests labelled slow, which only this pass runs.
+  release_tests() {
+    ctest --preset release -j "$jobs" -LE unit && ctest --preset release -j "$jobs" -L slow
+  }
+  stage "release tests (all but the unit tests the asan pass ran)" release_tests
+else
+  stage "release tests (every test)" ctest --preset release -j "$jobs"
+fi
