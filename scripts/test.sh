@@ -5,7 +5,7 @@
 # benchmarks run briefly, label bench) and the Debian package installed into a temporary root and
 # run. Each stage prints its wall time, and a table of them ends the run (docs/testing.md lists
 # them and where the time goes; CI must stay under 45 minutes on 2 cores).
-# Environment: CLM3D_FUZZ_SECONDS (default 15 per target), CLM3D_FUZZ_JOBS (fuzzers run at once,
+# Environment: CLM3D_FUZZ_SECONDS (default 10 per target), CLM3D_FUZZ_JOBS (fuzzers run at once,
 # default the number of cores), CLM3D_SKIP_SANITIZERS=1 to skip the fuzzers and the ASan and TSan
 # passes when iterating locally.
 set -euo pipefail
@@ -50,7 +50,7 @@ stage "dependencies" bash packaging/install-deps.sh
 if [ "${CLM3D_SKIP_SANITIZERS:-0}" != "1" ]; then
   stage "fuzz build (clang, libFuzzer, ASan+UBSan)" \
     bash -c 'cmake --preset fuzz > /dev/null && cmake --build --preset fuzz -j "$1"' _ "$jobs"
-  stage "fuzz run" bash scripts/run-fuzzers.sh build/fuzz "${CLM3D_FUZZ_SECONDS:-15}"
+  stage "fuzz run" bash scripts/run-fuzzers.sh build/fuzz "${CLM3D_FUZZ_SECONDS:-10}"
 
   stage "asan build (unit tests)" bash -c 'cmake --preset asan -DCLM3D_WERROR=ON > /dev/null &&
     cmake --build --preset asan -j "$1" --target clm3d_unit_tests' _ "$jobs"
