@@ -1,7 +1,6 @@
 // clm3d detect: face detectors measured on annotated photos (core/detect/detector_evaluation):
 // faces found, wrong faces picked, no face, time per image; with --calibrate the box calibration
 // measured on the photos; with --model the start error of the mean shape placed in the box.
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -14,7 +13,6 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/common/image_list.hpp"
-#include "core/common/number_text.hpp"
 #include "core/detect/detector_evaluation.hpp"
 #include "core/eval/yaw_bands.hpp"
 #include "core/model/model_file.hpp"
@@ -80,11 +78,7 @@ void runDetect(const DetectArgs& args) {
   }
   if (!args.poses.empty()) {
     const std::vector<double> edges = parseBandEdges(args.yawBands);
-    const auto edge = [](double d) { return fixedText(d, d == std::round(d) ? 0 : 1); };
-    std::vector<std::string> labels;
-    for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
-      labels.push_back(edge(edges[k]) + "-" + edge(edges[k + 1]));
-    }
+    const std::vector<std::string> labels = yawBandLabels(edges);
     const std::map<std::string, double> poses = readPoseCsv(args.poses);
     std::vector<int> bands;
     for (const fs::path& image : images) {

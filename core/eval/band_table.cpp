@@ -5,14 +5,10 @@
 
 #include "core/common/number_text.hpp"
 #include "core/eval/eval_report.hpp"
+#include "core/eval/yaw_bands.hpp"
 
 namespace clm3d {
 namespace {
-
-// A band edge: whole degrees without decimals.
-std::string bandEdgeText(double degrees) {
-  return fixedText(degrees, degrees == std::round(degrees) ? 0 : 1, "");
-}
 
 // "97.0%", or "n/a" for no faces.
 std::string bandPercent(int part, int whole) {
@@ -20,7 +16,7 @@ std::string bandPercent(int part, int whole) {
 }
 
 std::string bandRange(const BandTable& table, std::size_t k) {
-  return bandEdgeText(table.edges[k]) + "-" + bandEdgeText(table.edges[k + 1]);
+  return yawBandLabels(table.edges).at(k);
 }
 
 }  // namespace

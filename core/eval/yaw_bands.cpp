@@ -98,6 +98,15 @@ int yawBandOf(double yawDeg, const std::vector<double>& edges) {
   return bucketIndexOf(std::abs(yawDeg), edges);
 }
 
+std::vector<std::string> yawBandLabels(const std::vector<double>& edges) {
+  const auto edge = [](double d) { return fixedText(d, d == std::round(d) ? 0 : 1, ""); };
+  std::vector<std::string> labels;
+  for (std::size_t k = 0; k + 1 < edges.size(); ++k) {
+    labels.push_back(edge(edges[k]) + "-" + edge(edges[k + 1]));
+  }
+  return labels;
+}
+
 std::vector<double> yawsByStem(const PointFolderReport& report,
                                const std::map<std::string, double>& poses) {
   std::vector<double> yaws;

@@ -31,6 +31,9 @@ std::vector<double> parseBandEdges(std::string_view text);
 // edge); -1 for a NaN yaw or one outside every band.
 int yawBandOf(double yawDeg, const std::vector<double>& edges);
 
+// The bands' names, "0-30" for edges 0 and 30 (whole degrees without decimals): one per band.
+std::vector<std::string> yawBandLabels(const std::vector<double>& edges);
+
 // Per report image the yaw of its stem in `poses`, NaN where the CSV does not list it.
 std::vector<double> yawsByStem(const PointFolderReport& report,
                                const std::map<std::string, double>& poses);
