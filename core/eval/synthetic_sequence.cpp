@@ -348,6 +348,18 @@ std::vector<std::vector<bool>> readVisibilityTable(const fs::path& path) {
   return table;
 }
 
+TrackRow renderedTruthRow(int frame, double fps, const Pose& pose, Eigen::Matrix2Xd points) {
+  TrackRow row;
+  row.frame = frame;
+  row.timestamp = frame / fps;
+  row.success = true;
+  row.confidence = 1.0;
+  row.view = -1;
+  row.pose = pose;
+  row.points = std::move(points);
+  return row;
+}
+
 SequenceSummary writeSyntheticSequence(const TexturedMesh& mesh, const LandmarkSet& landmarks,
                                        const Scheme& scheme, const SequenceSettings& settings,
                                        const SequenceSubject& subject, const SequenceFiles& files,
@@ -372,15 +384,8 @@ SequenceSummary writeSyntheticSequence(const TexturedMesh& mesh, const LandmarkS
     if (cancel) cancel->throwIfCancelled();
     SequenceFrame frame = renderer.render(i);
     video.write(frame.bgr);
-    TrackRow row;
-    row.frame = i;
-    row.timestamp = i / settings.fps;
-    row.success = true;
-    row.confidence = 1.0;
-    row.view = -1;
-    row.pose = frame.pose;
-    row.points = std::move(frame.points);
-    summary.truth.rows.push_back(std::move(row));
+    summary.truth.rows.push_back(
+        renderedTruthRow(i, settings.fps, frame.pose, std::move(frame.points)));
     for (std::size_t k = 0; k < present.size(); ++k) {
       summary.hiddenPoints += present[k] && !frame.visible[k];
     }

@@ -143,6 +143,10 @@ struct SequenceSummary {
   std::vector<std::vector<bool>> visible;  // per frame, per landmark
 };
 
+// The truth row of a rendered frame: success 1, confidence 1, view -1, the frame's pose and its
+// projected points (also the truth of core/profile's turned photos).
+TrackRow renderedTruthRow(int frame, double fps, const Pose& pose, Eigen::Matrix2Xd points);
+
 // Renders every frame into files.video and writes the truth (success 1, confidence 1, view -1, the
 // pose and the projected points; hidden landmarks keep their projected position), the visibility
 // table and the description. Parent folders are created. Files are saved atomically and the

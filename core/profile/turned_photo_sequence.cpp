@@ -126,15 +126,8 @@ TurnedPhotoSummary writeTurnedPhotoSequence(
       std::snprintf(caption, sizeof(caption), "yaw %.0f pitch %.0f", a.yawDeg, a.pitchDeg);
       captions.push_back(caption);
     }
-    TrackRow row;
-    row.frame = i;
-    row.timestamp = i / settings.fps;
-    row.success = true;
-    row.confidence = 1.0;
-    row.view = -1;
-    row.pose = view.pose;
-    row.points = std::move(view.points);
-    summary.truth.rows.push_back(std::move(row));
+    summary.truth.rows.push_back(
+        renderedTruthRow(i, settings.fps, view.pose, std::move(view.points)));
     for (std::size_t k = 0; k < present.size(); ++k) {
       summary.hiddenPoints += present[k] && !view.visible[k];
     }
