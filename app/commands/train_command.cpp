@@ -52,9 +52,10 @@ void runTrain(TrainArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   CliProgress progress(CliProgress::Style::Tenths, false, "train");
   try {
-    std::vector<PhotoPlacement> placements;
+    TrainingDetails details;
     ClmModel model = trainFromManifest(args.dataset, args.settings, std::string(CLM3D_VERSION),
-                                       progress.callback(), &interrupt.token(), &placements);
+                                       progress.callback(), &interrupt.token(), &details);
+    const std::vector<PhotoPlacement>& placements = details.placements;
     if (!placements.empty()) {
       int used = 0;
       int copies = 0;
@@ -73,6 +74,9 @@ void runTrain(TrainArgs& args) {
                                      " left out as their views were full (per_view)"
                                : std::string())
                 << "); a model trained on photos inherits their licence terms\n";
+    }
+    if (!details.calibration.empty()) {
+      std::cerr << formatViewCalibration(model, details.calibration);
     }
     interrupt.token().throwIfCancelled();
     std::cerr << "train: saving\n";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "core/common/error.hpp"
@@ -92,6 +93,58 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
   return best;
 }
 
+double viewComparableScore(const FitResult& fit) {
+  return std::isfinite(fit.viewProbability) ? fit.viewProbability : fit.searchScore();
+}
+
+std::array<int, 2> neighbouringViews(const ClmModel& model, int view) {
+  std::array<int, 2> sides{-1, -1};
+  if (view < 0 || view >= static_cast<int>(model.views.size())) return sides;
+  const ViewModel& here = model.views[static_cast<std::size_t>(view)];
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    const ViewModel& other = model.views[v];
+    if (other.pitchDeg != here.pitchDeg || other.yawDeg == here.yawDeg) continue;
+    const std::size_t side = other.yawDeg < here.yawDeg ? 0 : 1;
+    const int best = sides[side];
+    if (best < 0 ||
+        std::abs(other.yawDeg - here.yawDeg) <
+            std::abs(model.views[static_cast<std::size_t>(best)].yawDeg - here.yawDeg)) {
+      sides[side] = static_cast<int>(v);
+    }
+  }
+  return sides;
+}
+
+FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
+                                  const FitResult& fit, double margin, const FitFinisher& finish,
+                                  int* searches) {
+  FitResult best = fit;
+  bool bestIsLast = true;
+  int count = 0;
+  for (const int view : neighbouringViews(model, fit.view)) {
+    if (view < 0) continue;
+    FitState start = fit.state;
+    // Half-way to the neighbour's centre: inside its cell, and a step the search can make up.
+    start.pose.yaw =
+        0.5 * (fit.state.pose.yaw + radians(model.views[static_cast<std::size_t>(view)].yawDeg));
+    FitResult turned = fitter.fit(image, start, view);
+    if (finish) finish(turned);
+    ++count;
+    bestIsLast = viewComparableScore(turned) > viewComparableScore(best) + margin;
+    if (bestIsLast) best = std::move(turned);
+  }
+  if (!bestIsLast) {
+    // The fitter keeps the last search's templates (the overlay draws them): search once more from
+    // the kept result, and keep that unless it is worse.
+    FitResult again = fitter.fit(image, best.state, best.view);
+    if (finish) finish(again);
+    ++count;
+    if (viewComparableScore(again) >= viewComparableScore(best)) best = std::move(again);
+  }
+  if (searches != nullptr) *searches += count;
+  return best;
+}
+
 std::vector<double> tiltAngles(int steps, double stepDeg) {
   std::vector<double> angles;
   for (int k = 1; k <= steps; ++k) {
@@ -129,6 +182,13 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
         fitFromBestStart(fitter, model, image, best->state, search.wider, nullptr, search.finish);
     bestIsLast = wider.confidence > best->confidence;
     if (bestIsLast) best = std::move(wider);
+  }
+  if (best && search.viewsBelow > 0.0 && std::isfinite(best->viewProbability) &&
+      best->viewProbability < search.viewsBelow) {
+    FitResult turned =
+        searchNeighbouringViews(fitter, model, image, *best, search.viewMargin, search.finish);
+    bestIsLast = true;  // searchNeighbouringViews leaves the fitter on the fit it returns
+    best = std::move(turned);
   }
   if (best && !bestIsLast) {
     // The fitter keeps the last search's templates (the overlay draws them), as fitFromBestFace.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <functional>
 #include <opencv2/core/mat.hpp>
 #include <optional>
@@ -46,6 +47,23 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
                            const FitState& start, const StartSearchSettings& settings,
                            int* searches = nullptr, const FitFinisher& finish = {});
 
+// The score fits ending in different views are compared on: the view's calibrated probability
+// (FitResult::viewProbability) when the fit has one, else the search's own confidence.
+double viewComparableScore(const FitResult& fit);
+
+// The views next to `fit`'s in yaw, at its pitch (-1 where there is none): [lower yaw, higher].
+std::array<int, 2> neighbouringViews(const ClmModel& model, int view);
+
+// A fit searched again from the views next to its own in yaw (neighbouringViews): from its state
+// turned half-way to each neighbour's centre, in that view, each finished with `finish`. Returns
+// the fit whose viewComparableScore is highest, `fit` itself unless another beats it by `margin`.
+// A head turning past its view's range is caught by the next view (issue 26); the calibration is
+// what makes a side view's score comparable with a frontal one's. `searches`, when given, has the
+// searches made added.
+FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
+                                  const FitResult& fit, double margin,
+                                  const FitFinisher& finish = {}, int* searches = nullptr);
+
 // A detected image's search over its faces: fitFromBestStart from stateFromBox of each face in
 // `faces` order (best first), `placed` applied to each start when given, until `accepted` says
 // yes to a fit or maxFaces faces are searched; returns the most confident fit (the first on ties)
@@ -67,6 +85,12 @@ struct FaceSearch {
   // too small or too large), and the more confident fit kept. 0 = never.
   double widerBelow = 0.0;
   StartSearchSettings wider{1, 0.15, {0.8, 1.25}};
+  // fitFromDetections: a kept fit whose calibrated probability (FitResult::viewProbability) is
+  // below viewsBelow is searched again from the neighbouring views (searchNeighbouringViews) and
+  // the one with the highest calibrated probability kept. 0 = never; no effect on a model whose
+  // views are not calibrated.
+  double viewsBelow = 0.0;
+  double viewMargin = 0.02;
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,

@@ -7,8 +7,8 @@
 
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
-#include "core/eval/face_box.hpp"
 #include "core/eval/statistics.hpp"
+#include "core/geometry/face_box.hpp"
 
 namespace clm3d {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
 #include "core/eval/eval_report.hpp"
-#include "core/eval/face_box.hpp"
+#include "core/geometry/face_box.hpp"
 #include "core/scheme/landmark_file.hpp"
 
 namespace clm3d {

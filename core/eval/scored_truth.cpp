@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
-#include "core/eval/face_box.hpp"
+#include "core/geometry/face_box.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/scheme/scheme_map.hpp"

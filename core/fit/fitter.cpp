@@ -167,6 +167,10 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   result.state = state;
   result.points = project(state);
   result.view = view;
+  const auto& calibration = model_->views[static_cast<std::size_t>(view)].calibration;
+  if (calibration && optimiser_->usesExperts()) {
+    result.viewProbability = (*calibration)(result.confidence);
+  }
   result.modelled.assign(static_cast<std::size_t>(model_->shape.pointCount()), false);
   result.landmarkConfidence.assign(static_cast<std::size_t>(model_->shape.pointCount()),
                                    std::numeric_limits<double>::quiet_NaN());

@@ -54,6 +54,11 @@ struct FitResult {
   // for the landmarks the final view does not model. Their mean over the modelled ones is
   // `confidence`.
   std::vector<double> landmarkConfidence;
+  // The final view's calibration (ViewModel::calibration) of the search's confidence: the
+  // probability that the search is right, on one scale for every view, so that fits ending in
+  // different views can be compared. NaN when the view has none or the optimiser is not the one it
+  // was calibrated for (the experts', rlms).
+  double viewProbability = std::numeric_limits<double>::quiet_NaN();
   bool converged = false;  // the finest scale met the tolerance within maxIterations
   int iterations = 0;      // over all scales
 

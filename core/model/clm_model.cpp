@@ -168,6 +168,10 @@ void ClmModel::validate() const {
       fail(field + ".visible", std::to_string(view.visible.size()) + " flags, the scheme has " +
                                    std::to_string(n) + " landmarks");
     }
+    if (view.calibration &&
+        !(std::isfinite(view.calibration->slope) && std::isfinite(view.calibration->offset))) {
+      fail(field + ".calibration", "not finite");
+    }
     if (view.scales.empty()) fail(field + ".scales", "no scales");
     for (std::size_t s = 0; s < view.scales.size(); ++s) {
       validatePatchModel(view.scales[s], view, n, field + ".scales[" + std::to_string(s) + "]");

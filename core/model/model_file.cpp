@@ -166,12 +166,13 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
     const json scales = scalesJson(view);
     std::vector<int> visible;
     for (const bool flag : view.visible) visible.push_back(flag ? 1 : 0);
-    views.push_back({{"pitch", view.pitchDeg},
-                     {"yaw", view.yawDeg},
-                     {"mirrored", view.mirrored},
-                     {"mirrorOf", mirrorOf[v]},
-                     {"visible", visible},
-                     {"scales", scales}});
+    json entry = {{"pitch", view.pitchDeg},  {"yaw", view.yawDeg}, {"mirrored", view.mirrored},
+                  {"mirrorOf", mirrorOf[v]}, {"visible", visible}, {"scales", scales}};
+    // Version 7, written only when they say something.
+    if (view.calibration)
+      entry["calibration"] = {view.calibration->slope, view.calibration->offset};
+    if (!view.refined) entry["refined"] = false;
+    views.push_back(std::move(entry));
   }
   return {{"scheme", model.schemeJson},
           {"settings", model.settingsJson},
@@ -373,6 +374,16 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
     view.pitchDeg = number(fields, "pitch");
     view.yawDeg = number(fields, "yaw");
     view.mirrored = fields.boolean("mirrored");
+    if (version >= 7) {
+      const Header& curve = fields.optionalArray("calibration");
+      if (!curve.empty()) {
+        if (curve.size() != 2 || !curve[0].is_number() || !curve[1].is_number()) {
+          fieldError(fields.name("calibration"), "must be [slope, offset]");
+        }
+        view.calibration = LogisticCurve{curve[0].get<double>(), curve[1].get<double>()};
+      }
+      view.refined = fields.boolean("refined", true);
+    }
     const Header& visible = array(fields, "visible", static_cast<std::size_t>(kMaxPoints));
     fields.rejectUnknown();
     for (const Header& flag : visible) {
@@ -506,7 +517,11 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       ViewModel& view = model.views[v];
       ViewModel rebuilt = mirrorView(model.views[static_cast<std::size_t>(mirrorOf[v])], scheme);
       if (rebuilt.mirrored != view.mirrored || rebuilt.yawDeg != view.yawDeg ||
-          rebuilt.pitchDeg != view.pitchDeg || rebuilt.visible != view.visible) {
+          rebuilt.pitchDeg != view.pitchDeg || rebuilt.visible != view.visible ||
+          rebuilt.refined != view.refined ||
+          rebuilt.calibration.has_value() != view.calibration.has_value() ||
+          (view.calibration && (rebuilt.calibration->slope != view.calibration->slope ||
+                                rebuilt.calibration->offset != view.calibration->offset))) {
         fieldError("views[" + std::to_string(v) + "]",
                    "does not match the mirror image of view " + std::to_string(mirrorOf[v]));
       }

@@ -21,7 +21,7 @@ namespace clm3d {
 // 5: the refiner's optional check (refiner "check"; its two arrays after the stages').
 // 6: the refiner stages' optional shape weights (refiner "shapeWeights"; after each stage's bias).
 // Version 1 files (no experts, every view stored) and versions 2 to 5 still load.
-inline constexpr std::uint32_t kModelFormatVersion = 6;
+inline constexpr std::uint32_t kModelFormatVersion = 7;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

@@ -119,6 +119,8 @@ ViewModel mirrorView(const ViewModel& source, const Scheme& scheme) {
   mirrored.pitchDeg = source.pitchDeg;
   mirrored.yawDeg = -source.yawDeg;
   mirrored.mirrored = !source.mirrored;
+  mirrored.calibration = source.calibration;
+  mirrored.refined = source.refined;
   mirrored.visible.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     mirrored.visible[static_cast<std::size_t>(i)] =

@@ -6,8 +6,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
+#include "core/common/logistic_curve.hpp"
 #include "core/model/patch_expert.hpp"
 #include "core/model/pca.hpp"
 #include "core/scheme/scheme.hpp"
@@ -37,6 +39,15 @@ struct ViewModel {
   std::vector<bool> visible;       // per scheme landmark: visible in >= 50% of the view's samples
   std::vector<PatchModel> scales;  // index 0 = finest; scale s samples at 1/2^s resolution
   bool mirrored = false;           // built by mirroring the opposite-yaw view
+  // The probability that a search which ends in this view is right, from its confidence (the
+  // patch experts' mean response, rlms): fitted at training on faces the experts did not learn
+  // from (core/train/view_calibration.hpp), so that fits in different views compare on one scale.
+  // Absent in models trained without photos and in files before format 7.
+  std::optional<LogisticCurve> calibration;
+  // Whether the model's point refiner learnt from faces in this view (format 7; before, every
+  // view): where it did not (profiles, for a refiner learnt from near-frontal photos), a fit's
+  // points are left as the search gives them and it is judged on the view's calibration.
+  bool refined = true;
 };
 
 // Zero mean, unit variance (population) in place; a constant (or empty) patch becomes zeros.

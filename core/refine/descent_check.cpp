@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/common/error.hpp"
+#include "core/common/logistic_curve.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/geometry/similarity2.hpp"
 #include "core/refine/descent_features.hpp"
@@ -21,40 +22,6 @@ Eigen::VectorXf featuresAt(const DescentRefiner& refiner, const cv::Mat& grey,
   return descentFeatures(grey, frame, frame.inverse(points), window);
 }
 
-double logistic(double x) {
-  return 1.0 / (1.0 + std::exp(-x));
-}
-
-// The logistic curve p = logistic(slope * score + offset) of most likelihood for the labels
-// (Newton's method, with a small ridge on the slope so that separable scores stay finite).
-std::pair<double, double> fitLogistic(const std::vector<double>& scores,
-                                      const std::vector<bool>& right) {
-  double slope = 1.0, offset = 0.0;
-  constexpr double kSlopeRidge = 1e-3;
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    double g0 = kSlopeRidge * slope, g1 = 0.0;
-    double h00 = kSlopeRidge, h01 = 0.0, h11 = 1e-9;
-    for (std::size_t i = 0; i < scores.size(); ++i) {
-      const double p = logistic(slope * scores[i] + offset);
-      const double e = p - (right[i] ? 1.0 : 0.0);
-      const double w = p * (1.0 - p);
-      g0 += e * scores[i];
-      g1 += e;
-      h00 += w * scores[i] * scores[i];
-      h01 += w * scores[i];
-      h11 += w;
-    }
-    const double det = h00 * h11 - h01 * h01;
-    if (!(det > 0.0)) break;
-    const double d0 = (h11 * g0 - h01 * g1) / det;
-    const double d1 = (h00 * g1 - h01 * g0) / det;
-    slope -= d0;
-    offset -= d1;
-    if (std::abs(d0) + std::abs(d1) < 1e-9) break;
-  }
-  return {slope, offset};
-}
-
 }  // namespace
 
 double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
@@ -63,7 +30,7 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
   if (check.empty() || !points.allFinite()) return std::numeric_limits<double>::quiet_NaN();
   const Eigen::VectorXf features = featuresAt(refiner, regionGrey, points, check.window);
   const double score = check.weights.dot(features - check.featureMean) + check.bias;
-  return logistic(check.slope * score + check.offset);
+  return LogisticCurve{check.slope, check.offset}(score);
 }
 
 DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
@@ -136,7 +103,9 @@ DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
     scores.push_back(check.weights.dot(features.col(s) - check.featureMean) + check.bias);
     labels.push_back(right[static_cast<std::size_t>(s)] != 0);
   }
-  std::tie(check.slope, check.offset) = fitLogistic(scores, labels);
+  const LogisticCurve curve = fitLogisticCurve(scores, labels);
+  check.slope = curve.slope;
+  check.offset = curve.offset;
   return check;
 }
 

@@ -8,14 +8,18 @@
 #include <opencv2/core/mat.hpp>
 
 #include "core/fit/fitter.hpp"
-#include "core/model/descent_refiner.hpp"
+#include "core/model/clm_model.hpp"
 #include "core/refine/descent_refinement.hpp"
 
 namespace clm3d {
 
-// Refines `fit` in place (nothing changes when the refiner is empty); `image` is the searched one,
-// `starts` as refineAndCheck takes them.
-void refineFit(const DescentRefiner& refiner, const cv::Mat& image, FitResult& fit,
+// Finishes `fit` in place with `model`'s refiner (nothing changes when it has none); `image` is
+// the searched one, `starts` as refineAndCheck takes them. In a view the refiner did not learn
+// (ViewModel::refined false: a profile, for a refiner learnt from near-frontal photos) the points
+// stay the search's, and the confidence becomes the view's calibrated probability
+// (FitResult::viewProbability) when it has one, so that such a fit is judged on the same
+// probability scale as a checked one.
+void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
                const RefinerStarts& starts = {});
 
 }  // namespace clm3d

@@ -66,6 +66,8 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.tiltSteps = tracker.tiltSteps;
   settings.tiltStepDeg = tracker.tiltStepDeg;
   settings.widerSearchBelow = tracker.widerSearchBelow;
+  settings.viewSearchProbability = tracker.viewSearchProbability;
+  settings.viewSearchMargin = tracker.viewSearchMargin;
   settings.widerSearch = tracker.widerSearch;
   settings.refineRuns = tracker.refineRuns;
   settings.refineSpread = tracker.refineSpread;
@@ -156,7 +158,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     const auto begin = std::chrono::steady_clock::now();
     FitFinisher finish;
     if (settings_.refine) {
-      finish = [this](FitResult& fit) { refineFit(model_->refiner, lastImage_, fit); };
+      finish = [this](FitResult& fit) { refineFit(*model_, lastImage_, fit); };
     }
     // Only the check's probability tells a wrong fit on real faces (docs/real-faces.md); a fit it
     // did not check passes.
@@ -177,6 +179,8 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       search.tiltStepDeg = settings_.tiltStepDeg;
       search.widerBelow = checked ? settings_.widerSearchBelow : 0.0;
       search.wider = settings_.widerSearch;
+      search.viewsBelow = settings_.viewSearchProbability;
+      search.viewMargin = settings_.viewSearchMargin;
       std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
                                                          faces, search, &turnedMilliseconds);
       outcome.detectMilliseconds += turnedMilliseconds;
@@ -195,7 +199,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       // The starts were compared by a refinement from one start each; the kept fit's points are
       // refined again from the search's own, now from several starts.
       fit.points = fitter.project(fit.state);
-      refineFit(model_->refiner, lastImage_, fit,
+      refineFit(*model_, lastImage_, fit,
                 RefinerStarts{settings_.refineRuns - 1, settings_.refineSpread});
     }
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;

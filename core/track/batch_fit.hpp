@@ -58,6 +58,9 @@ struct ImageFitSettings {
   double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
   // Fits the check is unsure of searched again, wider (TrackerSettings::widerSearchBelow).
   double widerSearchBelow = TrackerSettings{}.widerSearchBelow;
+  // Fits searched again from the neighbouring views (TrackerSettings::viewSearchProbability).
+  double viewSearchProbability = TrackerSettings{}.viewSearchProbability;
+  double viewSearchMargin = TrackerSettings{}.viewSearchMargin;
   StartSearchSettings widerSearch = TrackerSettings{}.widerSearch;
   // Runs of the refiner averaged for the kept fit, and their spread (TrackerSettings::refineRuns,
   // refineSpread).

@@ -93,49 +93,10 @@ void Tracker::setState(const FitState& state, int view) {
   smoother_.restart();
 }
 
-template <typename Attempt>
-void Tracker::searchNeighbouringViews(TrackStep& step, Attempt& attempt) {
-  const int current = step.fit->view;
-  const ViewModel& here = model_->views[static_cast<std::size_t>(current)];
-  // The nearest view centre on either side in yaw, at the same pitch.
-  int sides[2] = {-1, -1};
-  for (std::size_t v = 0; v < model_->views.size(); ++v) {
-    const ViewModel& view = model_->views[v];
-    if (view.pitchDeg != here.pitchDeg || view.yawDeg == here.yawDeg) continue;
-    const int side = view.yawDeg < here.yawDeg ? 0 : 1;
-    const int best = sides[side];
-    if (best < 0 ||
-        std::abs(view.yawDeg - here.yawDeg) <
-            std::abs(model_->views[static_cast<std::size_t>(best)].yawDeg - here.yawDeg)) {
-      sides[side] = static_cast<int>(v);
-    }
-  }
-  TrackStep best = step;
-  bool lastIsBest = true;
-  const FitState from = step.fit->state;
-  constexpr double kDeg = 3.14159265358979323846 / 180.0;
-  for (const int v : sides) {
-    if (v < 0) continue;
-    FitState start = from;
-    // Half-way to the neighbour's centre: inside its cell, and a step the search can make up.
-    start.pose.yaw =
-        0.5 * (from.pose.yaw + model_->views[static_cast<std::size_t>(v)].yawDeg * kDeg);
-    attempt(start, v);
-    const bool better =
-        step.fit && step.failure == TrackFailure::None &&
-        step.fit->searchScore() > best.fit->searchScore() + settings_.viewSearchMargin;
-    if (better) {
-      best = step;
-      lastIsBest = true;
-    } else {
-      lastIsBest = false;
-    }
-  }
-  if (!lastIsBest) {
-    // The overlay draws the fitter's last templates: search once more from the kept result.
-    attempt(best.fit->state, best.fit->view);
-    if (!step.fit || step.fit->searchScore() < best.fit->searchScore()) step = best;
-  }
+bool Tracker::wantsViewSearch(const FitResult& fit) const {
+  if (std::isfinite(fit.viewProbability))
+    return fit.viewProbability < settings_.viewSearchProbability;
+  return fit.searchScore() < viewSearchConfidence();
 }
 
 FitState Tracker::nextStart() const {
@@ -207,7 +168,7 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   double searchMs = 0.0;  // every search of the frame, refinement included
   FitFinisher finish;
   if (settings_.refine && !model_->refiner.empty()) {
-    finish = [&](FitResult& fit) { refineFit(model_->refiner, frame, fit); };
+    finish = [&](FitResult& fit) { refineFit(*model_, frame, fit); };
   }
   const auto attempt = [&](const FitState& start, int view,
                            const StartSearchSettings* search = nullptr) {
@@ -235,8 +196,18 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     // A prediction that overshoots (the head stopped or turned back) gets a second try from
     // where the face last was, before falling back to the detector.
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
-    if (step.fit && step.fit->searchScore() < viewSearchConfidence()) {
-      searchNeighbouringViews(step, attempt);
+    if (step.fit && wantsViewSearch(*step.fit)) {
+      const auto begin = std::chrono::steady_clock::now();
+      try {
+        step.fit = searchNeighbouringViews(fitter_, *model_, frame, *step.fit,
+                                           settings_.viewSearchMargin, finish);
+        step.failure = judge(*step.fit);
+      } catch (const InputError&) {
+        // A turned start put the face outside the image: the frame stands as it was searched.
+      }
+      searchMs +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+              .count();
     }
   }
   if (!fromPrevious || step.failure != TrackFailure::None) {

@@ -103,7 +103,18 @@ struct TrackerSettings {
   // On procedural heads turning to +-80 degrees the rlms error at 30-60 degrees was 0.112 / 0.107
   // off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
   double viewSearchExpertConfidence = 0.0;
-  double viewSearchMargin = 0.02;  // on either scale
+  // With a model whose views are calibrated (ViewModel::calibration, models trained with photos
+  // since format 7) the two above give way to this: a fit whose calibrated probability
+  // (FitResult::viewProbability) is below it is also searched from the neighbouring views, and the
+  // most probable kept, in `clm3d track` and `clm3d fit` alike (searchNeighbouringViews). The
+  // calibration puts a side view's score and a frontal one's on one scale, which the raw responses
+  // are not. 0, the default, switches it off: with the LFPW-trained model calibrated on held-out
+  // LFPW faces (ROC areas 0.6-0.8 off the frontal views) the search at 0.9 moved fits on 5 LFPW
+  // photos turned -80..80 degrees into wrong, pitched views that it accepted at 0.6-0.8, and the
+  // error over the face box at |yaw| 0-30 went from 0.035 to 0.123
+  // (docs/fitting.md#views-on-one-scale).
+  double viewSearchProbability = 0.0;
+  double viewSearchMargin = 0.02;  // on any of the scales
   // Temporal smoothing of the written points (off by default). Only the rows' points are
   // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
   // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
@@ -184,8 +195,8 @@ class Tracker {
   // next search starts where the output points are, not where the search's own 3D state drifted;
   // otherwise the search's state.
   FitState carriedState(const FitResult& fit) const;
-  template <typename Attempt>
-  void searchNeighbouringViews(TrackStep& step, Attempt& attempt);
+  // Whether a frame's fit is also searched from the neighbouring views.
+  bool wantsViewSearch(const FitResult& fit) const;
   FaceDetector& detector();
   void lose();  // the next frame starts from a detection (preferring the face last tracked)
 

@@ -240,6 +240,13 @@ std::vector<TrackerOption> buildOptions() {
                          "the same for rlms: the patch experts' mean response (0..1) below which "
                          "a frame is also searched from the neighbouring views (0 = never)",
                          [](S& s) -> double& { return s.viewSearchExpertConfidence; }));
+  options.push_back(real("view-search-probability", "View search below (calibrated)", "Search",
+                         search, 0.0, 1.0, 2,
+                         "with a model whose views are calibrated (trained with photos): the "
+                         "probability below which a fit is also searched from the neighbouring "
+                         "views in yaw, the most probable kept (0 = never; replaces --view-search "
+                         "and --view-search-expert for such models)",
+                         [](S& s) -> double& { return s.viewSearchProbability; }));
 
   // --- Smoothing (clm3d track; core/track/track_smoother.hpp) ------------------------------------
   options.push_back(flag(

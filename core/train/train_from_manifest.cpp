@@ -9,7 +9,7 @@ namespace clm3d {
 ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
                            const TrainSettings& requested, const std::string& toolVersion,
                            const ProgressCallback& progress, const CancelToken* cancel,
-                           std::vector<PhotoPlacement>* placements) {
+                           TrainingDetails* details) {
   requested.validate();
   const DatasetManifest manifest = loadManifest(manifestPath);
   TrainSettings settings = requested;
@@ -38,7 +38,7 @@ ClmModel trainFromManifest(const std::filesystem::path& manifestPath,
   const auto trainingProgress = [&](double fraction, std::string_view stage) {
     if (progress) progress(0.3 + 0.7 * fraction, stage);
   };
-  return trainModel(input, settings, trainingProgress, cancel, placements);
+  return trainModel(input, settings, trainingProgress, cancel, details);
 }
 
 }  // namespace clm3d

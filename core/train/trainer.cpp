@@ -34,7 +34,7 @@ std::string schemeJsonFor(const std::string& nameOrPath) {
 
 ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
                     const ProgressCallback& progress, const CancelToken* cancel,
-                    std::vector<PhotoPlacement>* placements) {
+                    TrainingDetails* details) {
   settings.validate();
   const Scheme scheme = Scheme::fromJson(input.schemeJson, "training scheme");
   if (cancel) cancel->throwIfCancelled();
@@ -53,26 +53,37 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
 
   const double photoShare = input.photos.empty() ? 0.0 : 0.1;
   std::vector<PhotoSample> photoSamples;
+  std::vector<PhotoPlacement> placements;
   if (!input.photos.empty()) {
     const auto photoProgress = [&](double fraction, std::string_view stage) {
       if (progress) progress(0.02 + photoShare * fraction, stage);
     };
     photoSamples = preparePhotoSamples(input.photos, input.schemeJson, model.shape, settings,
-                                       placements, photoProgress, cancel);
+                                       &placements, photoProgress, cancel);
   }
-  // With photos, the last 5% is the point refiner's.
-  const double textureEnd = input.photos.empty() ? 1.0 : 0.95;
+  // With photos, the last 10% is the point refiner's and the views' calibration.
+  const double textureEnd = input.photos.empty() ? 1.0 : 0.9;
   const auto textureProgress = [&](double fraction, std::string_view stage) {
     if (progress) progress(0.02 + photoShare + (textureEnd - 0.02 - photoShare) * fraction, stage);
   };
   const auto refinerProgress = [&](double fraction, std::string_view stage) {
-    if (progress) progress(textureEnd + (1.0 - textureEnd) * fraction, stage);
+    if (progress) progress(textureEnd + 0.05 * fraction, stage);
+  };
+  const auto calibrationProgress = [&](double fraction, std::string_view stage) {
+    if (progress) progress(textureEnd + 0.05 + 0.05 * fraction, stage);
   };
   model.views = trainTextureModels(input.subjects, scheme, settings, textureProgress, cancel,
                                    input.shapeOnly, photoSamples);
   if (!input.photos.empty()) {
     model.refiner = trainPhotoRefiner(input.photos, scheme, settings, refinerProgress, cancel);
+    ViewCalibrationSettings calibration;
+    calibration.seed = settings.seed;
+    calibration.threads = settings.threads;
+    std::vector<ViewCalibrationRow> rows =
+        calibrateViews(model, input.photos, placements, calibration, calibrationProgress, cancel);
+    if (details) details->calibration = std::move(rows);
   }
+  if (details) details->placements = std::move(placements);
   model.singleView = settings.singleView;
   model.patchRatio = settings.patchRatio;
   model.settingsJson = settings.toJson();

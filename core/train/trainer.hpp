@@ -14,6 +14,7 @@
 #include "core/train/photo_samples.hpp"
 #include "core/train/texture_training.hpp"
 #include "core/train/train_settings.hpp"
+#include "core/train/view_calibration.hpp"
 
 namespace clm3d {
 
@@ -26,22 +27,28 @@ struct TrainingInput {
   std::string toolVersion;             // provenance
 };
 
+// What a training run did beside the model, for its report.
+struct TrainingDetails {
+  std::vector<PhotoPlacement> placements;       // per photo: where it went, or why it was skipped
+  std::vector<ViewCalibrationRow> calibration;  // per calibrated view (none without photos)
+};
+
 // The JSON text of a scheme given as "thesis25", "ibug68" or a path to a scheme file.
 std::string schemeJsonFor(const std::string& nameOrPath);
 
 // Shape model from every subject's landmarks plus the shape-only sets; texture models from
 // renders of the subjects. Progress stages: "shape", "rendering", "pca". settings.singleView
 // makes the 2D baseline (one frontal view, 2D shape model).
-// Progress stage "photos" when there are photos. `placements` (optional) tells where each photo
-// went or why it was skipped.
+// With photos, progress stages "photos" and, after the refiner, "calibration": the views put on one
+// scale (core/train/view_calibration.hpp). `details` (optional) gets where each photo went and
+// the views' calibration.
 ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
                     const ProgressCallback& progress = {}, const CancelToken* cancel = nullptr,
-                    std::vector<PhotoPlacement>* placements = nullptr);
+                    TrainingDetails* details = nullptr);
 
 // Loads the manifest's subjects and shape samples (stage "loading") and trains on them.
 ClmModel trainFromManifest(const std::filesystem::path& manifest, const TrainSettings& settings,
                            const std::string& toolVersion, const ProgressCallback& progress = {},
-                           const CancelToken* cancel = nullptr,
-                           std::vector<PhotoPlacement>* placements = nullptr);
+                           const CancelToken* cancel = nullptr, TrainingDetails* details = nullptr);
 
 }  // namespace clm3d

@@ -127,8 +127,10 @@ TEST(ModelFile, RejectsForeignFilesAndNewerVersions) {
   EXPECT_EQ(parseError("P3\n2 2\n255\n"), "m.clm3d: not a clm3d model");
   EXPECT_EQ(parseError(""), "m.clm3d: not a clm3d model");
   std::string newer = good;
-  writeU32(newer, 8, 7);
-  EXPECT_EQ(parseError(newer), "m.clm3d: format version 7 is newer than this clm3d (" +
+  writeU32(newer, 8, kModelFormatVersion + 1);
+  EXPECT_EQ(parseError(newer), "m.clm3d: format version " +
+                                   std::to_string(kModelFormatVersion + 1) +
+                                   " is newer than this clm3d (" +
                                    std::to_string(kModelFormatVersion) + "); update clm3d");
   std::string zero = good;
   writeU32(zero, 8, 0);
@@ -514,6 +516,41 @@ TEST(ModelFile, SavingAnInvalidModelOrToABadPathFails) {
   EXPECT_THROW(saveModel(model, dir / "x.clm3d"), Error);
   EXPECT_FALSE(std::filesystem::exists(dir / "x.clm3d"));
   EXPECT_THROW(saveModel(test::makeTinyModel(), dir / "missing" / "x.clm3d"), InputError);
+}
+
+// Version 7: each view's calibration and whether the refiner learnt it are stored in the header
+// (a mirrored view's the same as its source's) and read back exactly; a model without them writes
+// no such keys; a mirrored view whose calibration differs from its source's, or a calibration
+// that is not [slope, offset], is refused.
+TEST(ModelFile, ViewCalibrationAndRefinedViewsRoundTrip) {
+  ClmModel model = tinyModelWithExperts();
+  EXPECT_EQ(headerOf(serializeModel(model)).find("calibration"), std::string::npos);
+  EXPECT_EQ(headerOf(serializeModel(model)).find("refined"), std::string::npos);
+  const Scheme scheme = model.scheme();
+  model.views[0].calibration = LogisticCurve{12.5, -6.25};
+  model.views[0].refined = false;
+  model.views[1].calibration = LogisticCurve{9.0, -4.0};
+  model.views[2] = mirrorView(model.views[0], scheme);
+  const std::string bytes = serializeModel(model);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  for (std::size_t v = 0; v < 3; ++v) {
+    ASSERT_TRUE(loaded.views[v].calibration.has_value()) << v;
+    EXPECT_EQ(loaded.views[v].calibration->slope, model.views[v].calibration->slope);
+    EXPECT_EQ(loaded.views[v].calibration->offset, model.views[v].calibration->offset);
+    EXPECT_EQ(loaded.views[v].refined, model.views[v].refined);
+  }
+  EXPECT_FALSE(loaded.views[2].refined);
+  EXPECT_NEAR((*loaded.views[1].calibration)(4.0 / 9.0), 0.5, 1e-12);
+
+  // View 2 (the mirror of view 0) comes after view 1's calibration.
+  expectEditsRefused(
+      bytes, "\"calibration\":[9.0,-4.0]",
+      {{"\"calibration\":[12.5,-6.25]", "\"calibration\":[12.0,-6.25]", "mirror image of view 0"},
+       {"\"refined\":false", "\"refined\":true", "mirror image of view 0"}});
+  expectEditsRefused(
+      bytes, "\"views\"",
+      {{"\"calibration\":[12.5,-6.25]", "\"calibration\":[12.5]", "views[0].calibration"}});
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "core/track/tracker.hpp"
 #include "core/train/refiner_training.hpp"
 #include "core/viz/image_file.hpp"
+#include "tests/support/calibrated_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
 #include "tests/support/refiner_fixture.hpp"
 #include "tests/support/test_support.hpp"
@@ -401,7 +402,7 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
 
   Fitter fitter(model, scene.camera, FitSettings{});
   FaceSearch search;
-  search.finish = [&](FitResult& fit) { refineFit(model.refiner, scene.image, fit); };
+  search.finish = [&](FitResult& fit) { refineFit(model, scene.image, fit); };
   search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
   const auto error = [&](const FitResult& fit) {
     return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
@@ -437,7 +438,7 @@ TEST(ImageFitRefiner, AFitTheCheckDoubtsIsSearchedAgainFromRescaledStarts) {
   Fitter fitter(model, scene.camera, FitSettings{});
   FaceDetector detector;  // not used: the face is given and no tilted copy is searched
   FaceSearch search;
-  search.finish = [&](FitResult& fit) { refineFit(model.refiner, scene.image, fit); };
+  search.finish = [&](FitResult& fit) { refineFit(model, scene.image, fit); };
   search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
   const auto error = [&](const FitResult& fit) {
     return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
@@ -453,6 +454,34 @@ TEST(ImageFitRefiner, AFitTheCheckDoubtsIsSearchedAgainFromRescaledStarts) {
   ASSERT_TRUE(wider.has_value());
   EXPECT_GT(wider->confidence, narrow->confidence);
   EXPECT_LT(error(*wider), 0.1);
+}
+
+// In a view the point refiner did not learn (ViewModel::refined false: profiles, for a refiner
+// learnt from near-frontal photos) a fit keeps the search's points and is judged on its view's
+// calibrated probability; in a view it learnt, the points are refined and checked as before.
+TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndItsCalibration) {
+  ClmModel model = test::calibratedFitTestModel().model;
+  model.refiner = test::photoRefiner();
+  for (ViewModel& view : model.views) view.refined = view.yawDeg == 0.0;
+  const FitScene side = makeFitScene(model, 0.0, -30.0, kHeldOutHead);
+  Fitter fitter(model, side.camera, FitSettings{});
+  FitResult searched = fitter.fit(side.image, side.truth);
+  ASSERT_FALSE(model.views[static_cast<std::size_t>(searched.view)].refined);
+  ASSERT_TRUE(std::isfinite(searched.viewProbability));
+  FitResult finished = searched;
+  refineFit(model, side.image, finished);
+  EXPECT_EQ(finished.points, searched.points);
+  EXPECT_EQ(finished.confidence, searched.viewProbability);
+  EXPECT_EQ(finished.searchConfidence, searched.confidence);
+
+  const FitScene front = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
+  FitResult frontal = fitter.fit(front.image, front.truth);
+  ASSERT_TRUE(model.views[static_cast<std::size_t>(frontal.view)].refined);
+  const FitResult raw = frontal;
+  refineFit(model, front.image, frontal);
+  EXPECT_NE(frontal.points, raw.points);
+  EXPECT_NE(frontal.confidence, raw.viewProbability) << "the check's probability";
+  EXPECT_EQ(frontal.searchConfidence, raw.confidence);
 }
 
 }  // namespace

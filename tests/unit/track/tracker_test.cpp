@@ -14,6 +14,7 @@
 #include "core/eval/landmark_error.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/track/fit_overlay.hpp"
+#include "tests/support/calibrated_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
 
 namespace clm3d {
@@ -118,6 +119,42 @@ TEST(Tracker, ALowConfidenceFrameIsSearchedFromTheNeighbouringView) {
   const double searchedError = frameError(searched.row.points, scene.truthPoints);
   EXPECT_LT(searchedError, 0.1) << "frontal alone: " << aloneError;
   EXPECT_LT(searchedError, 0.5 * aloneError);
+}
+
+// With calibrated views and the search asked for, the search from the neighbouring views compares
+// the views' calibrated probabilities: the head at -30 degrees that the track believed frontal is
+// followed into the -30 view, and a frontal head stays in the frontal view frame after frame.
+TEST(Tracker, WithCalibratedViewsATurnedHeadIsFollowedIntoItsViewAndAFrontalOneStays) {
+  const ClmModel& model = test::calibratedFitTestModel().model;
+  int frontal = -1, side = -1;
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    if (model.views[v].yawDeg == 0.0) frontal = static_cast<int>(v);
+    if (model.views[v].yawDeg == -30.0) side = static_cast<int>(v);
+  }
+  ASSERT_GE(frontal, 0);
+  ASSERT_GE(side, 0);
+  const test::FitScene turned = test::makeFitScene(model, 0.0, -30.0, test::kHeldOutHead, 60.0);
+  FitState start = turned.truth;
+  start.pose.yaw = 0.0;
+  TrackerSettings settings;
+  EXPECT_EQ(settings.viewSearchProbability, 0.0) << "off by default";
+  settings.viewSearchProbability = 0.9;
+  Tracker follows(model, turned.camera, settings);
+  follows.setState(start, frontal);
+  const TrackStep step = follows.track(turned.image, 0, 0.0);
+  ASSERT_TRUE(step.fit);
+  EXPECT_EQ(step.fit->view, side);
+  EXPECT_LT(frameError(step.row.points, turned.truthPoints), 0.1);
+
+  const test::FitScene ahead = test::makeFitScene(model, 0.0, 2.0, test::kHeldOutHead, 60.0);
+  Tracker stays(model, ahead.camera, settings);
+  stays.setState(ahead.truth, frontal);
+  for (int frame = 0; frame < 3; ++frame) {
+    const TrackStep kept = stays.track(ahead.image, frame, frame / 30.0);
+    ASSERT_TRUE(kept.fit);
+    EXPECT_EQ(kept.fit->view, frontal) << frame;
+    EXPECT_TRUE(kept.row.success) << frame;
+  }
 }
 
 TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {

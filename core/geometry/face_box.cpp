@@ -1,4 +1,4 @@
-#include "core/eval/face_box.hpp"
+#include "core/geometry/face_box.hpp"
 
 #include <cmath>
 #include <limits>
