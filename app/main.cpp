@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;
+  } catch (const clm3d::UsageError& e) {  // found by core reading a command's request
+    std::cerr << e.what() << "\nRun with --help for more information.\n";
+    return 2;
   } catch (const clm3d::Cancelled&) {
     std::cerr << "clm3d: cancelled\n";
     return 1;

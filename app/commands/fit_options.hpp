@@ -30,9 +30,4 @@ struct FitOptions {
 // and --fov. `options` must outlive the command's parsing.
 void addFitOptions(CLI::App& command, FitOptions& options, OptionCommand which);
 
-// The start state of `--init FILE`: the model fitted to the file's points (.pts, .ljson, .csv;
-// 68-point files converted). Problems are InputErrors that name the file.
-FitState startFromPointsFile(const ClmModel& model, const Camera& camera,
-                             const std::filesystem::path& path);
-
 }  // namespace clm3d::cli

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <csignal>
+#include <string>
 
+#include "core/common/error.hpp"
 #include "core/common/progress.hpp"
 
 namespace clm3d::cli {
@@ -26,5 +28,17 @@ class InterruptScope {
   void (*previous_)(int) = nullptr;
   bool active_ = false;
 };
+
+// Runs job(token) inside an InterruptScope and returns what it returns; a job cancelled by Ctrl-C
+// becomes Error(cancelledMessage) (e.g. "cancelled, no sequence written"), which the CLI prints.
+template <typename Job>
+auto runInterruptible(const std::string& cancelledMessage, Job job) {
+  InterruptScope interrupt;
+  try {
+    return job(interrupt.token());
+  } catch (const Cancelled&) {
+    throw Error(cancelledMessage);
+  }
+}
 
 }  // namespace clm3d::cli

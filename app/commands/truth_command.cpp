@@ -1,186 +1,19 @@
-// clm3d truth: builds a ground truth for a video the way the studio's track page does, from a
-// tracker output (or an earlier ground truth, or nothing), hand-placed keyframes read from landmark
-// files, and linear interpolation between keyframes; writes the ground-truth CSV and optionally
-// one .pts per frame and COCO keypoints JSON; reads COCO keypoints back (--in FILE.json). All of it
-// is core/track/ground_truth.hpp and core/track/coco_keypoints.hpp (docs/ground-truth.md).
-#include <charconv>
-#include <filesystem>
-#include <iostream>
-#include <memory>
-#include <optional>
-#include <string>
-#include <vector>
-
+// clm3d truth: a ground truth for a video from a tracker output, hand-placed keyframes and
+// interpolation, as CSV, .pts per frame and COCO keypoints (docs/ground-truth.md). The options and
+// the run are core's (core/track/truth_request).
 #include "app/commands/commands.hpp"
-#include "core/common/error.hpp"
-#include "core/scheme/landmark_file.hpp"
-#include "core/track/coco_keypoints.hpp"
-#include "core/track/ground_truth.hpp"
-#include "core/video/video_reader.hpp"
+#include "app/commands/option_cli.hpp"
+#include "core/track/truth_request.hpp"
 
 namespace clm3d::cli {
-namespace {
-
-namespace fs = std::filesystem;
-
-struct TruthArgs {
-  fs::path in;
-  fs::path out;
-  fs::path pts;
-  fs::path coco;
-  fs::path video;
-  std::string imageSize;  // WxH
-  std::string scheme;
-  int frames = -1;
-  std::vector<std::string> keyframes;  // FRAME=FILE
-  std::vector<int> clear;
-  bool interpolate = false;
-};
-
-int frameNumber(const std::string& text, const std::string& option) {
-  int frame = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, frame);
-  if (text.empty() || ec != std::errc() || ptr != end || frame < 0) {
-    throw InputError(option + ": \"" + text + "\" is not a frame number");
-  }
-  return frame;
-}
-
-// FRAME=FILE: the frame's points from a landmark file (.pts, .ljson, .csv), x and y only.
-void setKeyframeFromFile(GroundTruthSet& set, const std::string& spec) {
-  const auto equals = spec.find('=');
-  if (equals == std::string::npos) {
-    throw InputError("--keyframe: \"" + spec + "\" is not FRAME=FILE");
-  }
-  const int frame = frameNumber(spec.substr(0, equals), "--keyframe");
-  const fs::path file = spec.substr(equals + 1);
-  const auto points = readLandmarks(file);
-  if (set.table.landmarkCount != 0 && points.size() != set.table.landmarkCount) {
-    throwInputError(file, "has " + std::to_string(points.size()) +
-                              " points, the ground truth has " +
-                              std::to_string(set.table.landmarkCount));
-  }
-  set.setKeyframe(frame, points.matrix().topRows(2));
-}
-
-// --image-size WxH, or the --video's size: the COCO images' width and height.
-CocoImageSize cocoImageSize(const TruthArgs& args) {
-  if (!args.imageSize.empty()) {
-    const auto x = args.imageSize.find('x');
-    CocoImageSize size;
-    try {
-      if (x != std::string::npos) {
-        size.width = frameNumber(args.imageSize.substr(0, x), "--image-size");
-        size.height = frameNumber(args.imageSize.substr(x + 1), "--image-size");
-      }
-    } catch (const InputError&) {
-      size = {};  // reported below, as the whole option
-    }
-    if (size.width <= 0 || size.height <= 0) {
-      throw InputError("--image-size: \"" + args.imageSize + "\" is not WIDTHxHEIGHT (640x480)");
-    }
-    return size;
-  }
-  if (args.video.empty()) {
-    throw InputError("truth: --coco needs the frames' size: give --video or --image-size WxH");
-  }
-  const VideoReader reader(args.video);
-  return {reader.width(), reader.height()};
-}
-
-// --scheme, else the built-in scheme of the set's landmark count.
-Scheme truthScheme(const TruthArgs& args, int landmarkCount) {
-  if (!args.scheme.empty()) return Scheme::byNameOrPath(args.scheme);
-  if (const Scheme* builtIn = builtInSchemeOfSize(landmarkCount)) return *builtIn;
-  throw InputError("truth: no built-in scheme has " + std::to_string(landmarkCount) +
-                   " landmarks; give --scheme (a scheme .json) for the COCO keypoint names");
-}
-
-GroundTruthSet loadTruthInput(const TruthArgs& args) {
-  if (args.in.empty()) return GroundTruthSet::fromTrack(TrackTable{}, args.frames);
-  if (!isCocoKeypointsFile(args.in)) return loadGroundTruth(args.in);
-  if (args.scheme.empty()) return loadCocoKeypoints(args.in);
-  const Scheme scheme = Scheme::byNameOrPath(args.scheme);
-  return loadCocoKeypoints(args.in, &scheme);
-}
-
-void runTruth(const TruthArgs& args) {
-  if (args.in.empty() && args.frames < 0) {
-    throw InputError(
-        "truth: give --in (a tracks or ground-truth CSV, or COCO keypoints JSON) or --frames (to "
-        "start empty)");
-  }
-  // Checked before anything is written, so a missing size does not leave a half-done export.
-  const std::optional<CocoImageSize> cocoSize =
-      args.coco.empty() ? std::nullopt : std::optional<CocoImageSize>(cocoImageSize(args));
-  GroundTruthSet set = loadTruthInput(args);
-  if (args.frames >= 0) {
-    if (args.frames < set.frameCount()) {
-      throwInputError(args.in, "has " + std::to_string(set.frameCount()) +
-                                   " frames, more than --frames " + std::to_string(args.frames));
-    }
-    set.padTo(args.frames);
-  }
-  for (const int frame : args.clear) set.clearKeyframe(frame);
-  for (const auto& spec : args.keyframes) setKeyframeFromFile(set, spec);
-  const int filled = args.interpolate ? set.interpolateKeyframes() : 0;
-
-  std::optional<Scheme> scheme;
-  if (cocoSize) scheme = truthScheme(args, set.table.landmarkCount);
-  saveGroundTruth(args.out, set, args.pts);
-  if (cocoSize) saveCocoKeypoints(args.coco, set, *scheme, *cocoSize);
-  std::cout << "ground truth: " << args.out.string() << " (" << set.frameCount() << " frames, "
-            << set.keyframeCount() << " keyframes, " << set.table.landmarkCount << " landmarks)\n";
-  if (args.interpolate) std::cout << "interpolated: " << filled << " frames\n";
-  if (!args.pts.empty()) {
-    std::cout << "pts: " << args.pts.string() << " (" << set.frameCount()
-              << " files frame_NNNNNN.pts)\n";
-  }
-  if (cocoSize) {
-    std::cout << "coco: " << args.coco.string() << " (" << set.frameCount() << " images "
-              << cocoSize->width << "x" << cocoSize->height << ", scheme " << scheme->name()
-              << ")\n";
-  }
-}
-
-}  // namespace
 
 void addTruthCommand(CLI::App& root) {
-  auto args = std::make_shared<TruthArgs>();
-  CLI::App* command = root.add_subcommand(
-      "truth",
-      "Build a ground truth from a tracker output and hand-placed keyframes, interpolating "
-      "between keyframes; writes the ground-truth CSV and optionally one .pts per frame and COCO "
-      "keypoints JSON");
-  command->add_option("--in", args->in,
-                      "Start from this tracks CSV, ground-truth CSV or COCO keypoints JSON "
-                      "(.json; keyframes are kept)");
-  command
-      ->add_option("--frames", args->frames,
-                   "Frames of the video: pads the table with empty frames up to this count "
-                   "(without --in, starts from an empty ground truth)")
-      ->check(CLI::Range(0, kMaxGroundTruthFrames));
-  command->add_option("--keyframe", args->keyframes,
-                      "FRAME=FILE: the hand-placed points of a frame from a landmark file "
-                      "(.pts, .ljson, .csv), marked as a keyframe (repeatable)");
-  command->add_option("--clear-keyframe", args->clear,
-                      "FRAME: no longer a keyframe; its points stay (repeatable)");
-  command->add_flag("--interpolate", args->interpolate,
-                    "Fill every frame between two keyframes linearly");
-  command->add_option("--out", args->out, "Ground-truth CSV to write (may be the --in file)")
-      ->required();
-  command->add_option("--pts", args->pts, "Also write DIR/frame_000042.pts for every frame");
-  command->add_option("--coco", args->coco,
-                      "Also write COCO keypoints JSON (images frame_000042.png, one annotation per "
-                      "frame with points, the scheme's names and skeleton)");
-  command->add_option("--video", args->video, "The video: the COCO images' width and height");
-  command->add_option("--image-size", args->imageSize,
-                      "WIDTHxHEIGHT of the frames for --coco, instead of --video");
-  command->add_option("--scheme", args->scheme,
-                      "Landmark scheme for the COCO keypoint names: thesis25, ibug68 or a scheme "
-                      ".json (default: the built-in scheme with the set's landmark count)");
-  command->callback([args] { runTruth(*args); });
+  addRequestCommand(root, "truth",
+                    "Build a ground truth from a tracker output and hand-placed keyframes, "
+                    "interpolating between keyframes; writes the ground-truth CSV and optionally "
+                    "one .pts per frame and COCO keypoints JSON",
+                    truthOptions(),
+                    [](const TruthRequest& request, const CLI::App&) { return runTruth(request); });
 }
 
 }  // namespace clm3d::cli

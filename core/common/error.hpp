@@ -21,6 +21,14 @@ class InputError : public Error {
   using Error::Error;
 };
 
+// Bad usage found while a command's request is read: options that do not go together, or one
+// that is missing. The CLI maps it to exit code 2, as its parser's own errors; the message starts
+// with the option(s), e.g. "--beside: a turned photo is one face".
+class UsageError : public Error {
+ public:
+  UsageError(const std::string& option, const std::string& what) : Error(option + ": " + what) {}
+};
+
 // An operation stopped because its CancelToken was triggered.
 class Cancelled : public Error {
  public:

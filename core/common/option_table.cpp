@@ -122,4 +122,31 @@ std::string optionRealListText(const std::vector<double>& values) {
   return text;
 }
 
+void checkExistingFile(std::string_view text) {
+  if (!std::filesystem::is_regular_file(std::filesystem::path(text))) {
+    throw InputError("file not found: " + std::string(text));
+  }
+}
+
+void checkExistingPath(std::string_view text) {
+  if (!std::filesystem::exists(std::filesystem::path(text))) {
+    throw InputError("path not found: " + std::string(text));
+  }
+}
+
+std::string optionText(const std::filesystem::path& value) {
+  return value.string();
+}
+
+std::vector<std::string> splitOptionLines(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    items.emplace_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return items;
+}
+
 }  // namespace clm3d

@@ -4,10 +4,13 @@
 // option_cli.hpp), what the studio builds its forms from (ui/common/option_fields.hpp) and what a
 // settings struct validates itself against, so the help, the defaults, the ranges and the widgets
 // cannot drift apart. The tracker's options (core/track/tracker_options) and the training options
-// (core/train/train_options) are such tables. Tables are static: references to their entries stay
-// valid for the program's life.
+// (core/train/train_options) are such tables; so are the requests of the other commands (e.g.
+// core/eval/synth_request, core/detect/detect_request), one command each, whose options the CLI
+// adds with cli::addCommandOptions. Tables are static: references to their entries stay valid for
+// the program's life.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -19,7 +22,9 @@
 
 namespace clm3d {
 
-// RealList: numbers separated by commas, each within the range (e.g. view angles).
+// RealList: numbers separated by commas, each within the range (e.g. view angles). A Choice
+// without choices takes any text its parser takes: a command's file, name or value with its own
+// syntax (textOption; repeatable: textListOption).
 enum class OptionKind { Integer, Real, Flag, Choice, RealList };
 
 // The commands an option applies to; the studio's forms are named after them (the Track page's
@@ -65,7 +70,25 @@ struct OptionSpec {
   std::vector<std::string> choices;  // Choice: the valid values
   // The commands (and studio forms) the option applies to; the others do not accept it.
   OptionCommands commands{};
+  bool required = false;    // a command's own table: the command cannot run without it
+  bool repeatable = false;  // given several times, its values one a line (textListOption)
 };
+
+// A command's own option (no studio label or group): name, help and, for numbers, the range.
+inline OptionSpec commandOption(std::string name, std::string help, double minimum = 0.0,
+                                double maximum = 0.0) {
+  OptionSpec spec;
+  spec.name = std::move(name);
+  spec.help = std::move(help);
+  spec.minimum = minimum;
+  spec.maximum = maximum;
+  return spec;
+}
+inline OptionSpec requiredOption(std::string name, std::string help) {
+  OptionSpec spec = commandOption(std::move(name), std::move(help));
+  spec.required = true;
+  return spec;
+}
 
 // The shortest text that reads back to the same double.
 std::string optionRealText(double value);
@@ -79,6 +102,16 @@ bool parseOptionFlag(const OptionSpec& option, std::string_view text);  // true/
 const std::string& parseOptionChoice(const OptionSpec& option, std::string_view text);
 std::vector<double> parseOptionRealList(const OptionSpec& option, std::string_view text);
 std::string optionRealListText(const std::vector<double>& values);  // "-60,-30,0"
+// Text options' checks: InputError "file not found: TEXT" / "path not found: TEXT".
+void checkExistingFile(std::string_view text);
+void checkExistingPath(std::string_view text);
+// A Text option's value as text (a path as its string).
+inline std::string optionText(const std::string& value) {
+  return value;
+}
+std::string optionText(const std::filesystem::path& value);
+// "a\nb" -> {"a", "b"}; "" -> {} (a TextList's items).
+std::vector<std::string> splitOptionLines(std::string_view text);
 
 // One option of a `Settings` struct (default-constructible: its defaults are the option's).
 template <typename Settings>
@@ -93,8 +126,8 @@ struct Option : OptionSpec {
 };
 
 // An option of `kind` reading and writing one field: `field` gives the field of a settings struct,
-// e.g. [](S& s) -> int& { return s.scales; }; `toText` writes its value as text and `parse` reads
-// text back (an InputError naming the option when it is not valid).
+// e.g. [](S& s) -> int& { return s.scales; } or &S::scales; `toText` writes its value as text and
+// `parse` reads text back (an InputError naming the option when it is not valid).
 template <typename Settings, typename Field, typename ToText, typename Parse>
 Option<Settings> fieldOption(OptionSpec spec, OptionKind kind, Field field, ToText toText,
                              Parse parse) {
@@ -102,12 +135,12 @@ Option<Settings> fieldOption(OptionSpec spec, OptionKind kind, Field field, ToTe
   Option<Settings> option{std::move(spec), {}, {}};
   option.get = [field, toText](const Settings& settings) {
     Settings copy = settings;
-    return toText(field(copy));
+    return toText(std::invoke(field, copy));
   };
   option.set = [field, parse, described = static_cast<OptionSpec>(option)](Settings& s,
                                                                            std::string_view text) {
-    using Value = std::remove_reference_t<decltype(field(s))>;
-    field(s) = static_cast<Value>(parse(described, text));
+    using Value = std::remove_reference_t<decltype(std::invoke(field, s))>;
+    std::invoke(field, s) = static_cast<Value>(parse(described, text));
   };
   return option;
 }
@@ -158,6 +191,84 @@ Option<Settings> choiceOption(OptionSpec spec, std::function<std::string(const S
     apply(s, parseOptionChoice(described, text));
   };
   return option;
+}
+
+// An integer that may be absent (std::optional field; "" when it is).
+template <typename Settings, typename Field>
+Option<Settings> optionalIntegerOption(OptionSpec spec, Field field) {
+  spec.decimals = 0;
+  return fieldOption<Settings>(
+      std::move(spec), OptionKind::Integer, field,
+      [](const auto& value) { return value ? std::to_string(*value) : std::string(); },
+      parseOptionInteger);
+}
+
+// Text read into a std::string or std::filesystem::path field; `check`, when given, throws the
+// InputError of a text the option does not take (e.g. "expected FROM:TO").
+template <typename Settings, typename Field>
+Option<Settings> textOption(OptionSpec spec, Field field,
+                            std::function<void(std::string_view)> check = {}) {
+  spec.choices.clear();  // any text
+  return fieldOption<Settings>(
+      std::move(spec), OptionKind::Choice, field,
+      [](const auto& value) { return std::string(optionText(value)); },
+      [check](const OptionSpec&, std::string_view text) {
+        if (check) check(text);
+        return std::string(text);
+      });
+}
+
+// A Text that must be one of `choices`, into a std::string field.
+template <typename Settings, typename Field>
+Option<Settings> textChoiceOption(OptionSpec spec, Field field, std::vector<std::string> choices) {
+  spec.choices = std::move(choices);
+  return fieldOption<Settings>(
+      std::move(spec), OptionKind::Choice, field, [](const std::string& v) { return v; },
+      [](const OptionSpec& described, std::string_view text) {
+        return parseOptionChoice(described, text);
+      });
+}
+
+// A repeatable Text into a std::vector of strings or paths; the text holds the items one a line.
+template <typename Settings, typename Field>
+Option<Settings> textListOption(OptionSpec spec, Field field) {
+  spec.kind = OptionKind::Choice;  // any text, the option repeatable
+  spec.choices.clear();
+  spec.repeatable = true;
+  Option<Settings> option{std::move(spec), {}, {}};
+  option.get = [field](const Settings& settings) {
+    Settings copy = settings;
+    std::string text;
+    for (const auto& value : std::invoke(field, copy)) {
+      text += (text.empty() ? "" : "\n") + optionText(value);
+    }
+    return text;
+  };
+  option.set = [field](Settings& settings, std::string_view text) {
+    auto& values = std::invoke(field, settings);
+    values.clear();
+    for (const std::string& item : splitOptionLines(text)) values.emplace_back(item);
+  };
+  return option;
+}
+
+// `inner`'s options working on the Inner part of an Outer (`field` gives it, e.g. &Request::
+// settings): a command's request that holds settings with a table of their own.
+template <typename Outer, typename Inner, typename Field>
+std::vector<Option<Outer>> nestedOptions(const std::vector<Option<Inner>>& inner, Field field) {
+  std::vector<Option<Outer>> options;
+  for (const Option<Inner>& option : inner) {
+    Option<Outer> outer{static_cast<const OptionSpec&>(option), {}, {}};
+    outer.get = [get = option.get, field](const Outer& settings) {
+      Outer copy = settings;
+      return get(std::invoke(field, copy));
+    };
+    outer.set = [set = option.set, field](Outer& settings, std::string_view text) {
+      set(std::invoke(field, settings), text);
+    };
+    options.push_back(std::move(outer));
+  }
+  return options;
 }
 
 // nullptr when the table has no option of that name.

@@ -53,6 +53,10 @@ cv::Mat sheetTile(const cv::Mat& bgr, const Eigen::Matrix2Xd& points,
 
 }  // namespace
 
+int turnedPhotoFrameCount(const TurnedPhotoSettings& settings) {
+  return static_cast<int>(sequenceAngles(angleSettings(settings)).size());
+}
+
 void TurnedPhotoSettings::validate() const {
   angleSettings(*this).validate();
   profile.validate();

@@ -57,6 +57,9 @@ struct TurnedPhotoSummary {
   cv::Mat contactSheet;                    // BGR, when settings.sheetFrames > 0
 };
 
+// The frames a turned photo's sequence has: its yaw (and pitch) range at its step.
+int turnedPhotoFrameCount(const TurnedPhotoSettings& settings);
+
 // Profiles `photo` (8-bit BGR; cropped to even sides, the video codecs' need) from `points` (2D,
 // the dense face's scheme, thesis25 for `clm3d synth`) with a camera of the photo's size and the
 // settings' field of view, then renders and writes every frame: the truth (success 1, confidence

@@ -1,0 +1,88 @@
+#include "core/model/model_summary.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "core/model/model_file.hpp"
+
+namespace clm3d {
+namespace model_summary_detail {
+
+std::string percent(double share) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << 100.0 * share << "%";
+  return out.str();
+}
+
+// The shape model; the precision it sets carries on to the views' lines, as it always has.
+void describeShape(std::ostream& out, const ShapeModel& shape) {
+  out << "shape model: " << shape.dims << "D, " << shape.pointCount() << " points, "
+      << shape.modeCount() << " modes, limit +-" << shape.limitSd << " SD\n";
+  if (shape.modeCount() == 0) return;
+  const double total = shape.variances.sum();
+  out << "  mode SD (mm):";
+  for (Eigen::Index k = 0; k < shape.variances.size(); ++k) {
+    out << " " << std::setprecision(3) << std::sqrt(shape.variances[k]);
+    if (k == 9 && shape.variances.size() > 10) {
+      out << " ...";
+      break;
+    }
+  }
+  out << "\n  first mode: " << percent(shape.variances[0] / total) << " of the kept variance\n";
+}
+
+void describeView(std::ostream& out, const ViewModel& view, std::size_t index,
+                  const Scheme& scheme) {
+  int visible = 0;
+  std::string hidden;
+  for (int i = 0; i < scheme.size(); ++i) {
+    if (view.visible[static_cast<std::size_t>(i)]) {
+      ++visible;
+    } else {
+      hidden += (hidden.empty() ? "" : ", ") + std::to_string(i + 1) + " " + scheme.id(i);
+    }
+  }
+  out << "view " << index << ": pitch " << view.pitchDeg << ", yaw " << view.yawDeg
+      << (view.mirrored ? " (mirrored)" : "") << ", " << visible << "/" << scheme.size()
+      << " landmarks visible" << (hidden.empty() ? "" : "; hidden: " + hidden) << "\n";
+  for (std::size_t s = 0; s < view.scales.size(); ++s) {
+    const PatchModel& patch = view.scales[s];
+    out << "  scale " << s << ": " << patch.patchSize << "x" << patch.patchSize << " patches, "
+        << patch.pca.modeCount() << " PCA modes (dimension " << patch.pca.dimension() << ")\n";
+  }
+}
+
+}  // namespace model_summary_detail
+
+std::string describeModelFile(const std::filesystem::path& path) {
+  const ClmModel model = loadModel(path);
+  const Scheme scheme = model.scheme();
+  std::ostringstream out;
+  out << "model: " << path.string() << " (" << std::filesystem::file_size(path)
+      << " bytes, format version " << modelFileVersion(path) << ")\n";
+  out << "scheme: " << scheme.name() << ", " << scheme.size() << " landmarks\n";
+  out << "type: " << (model.singleView ? "single-view 2D baseline" : "multi-view 3D") << ", "
+      << model.views.size() << " view(s), patch ratio " << model.patchRatio << "\n";
+  model_summary_detail::describeShape(out, model.shape);
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    model_summary_detail::describeView(out, model.views[v], v, scheme);
+  }
+  if (model.refiner.empty()) {
+    out << "point refiner: none\n";
+  } else {
+    out << "point refiner: " << model.refiner.stages.size() << " stages over "
+        << model.refiner.landmarks.size() << " landmarks, "
+        << (model.refiner.check.empty() ? "no check (fits keep the search's confidence)"
+                                        : "checked (a fit's confidence is the check's)")
+        << "\n";
+  }
+  const ModelProvenance& p = model.provenance;
+  out << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"
+      << "created: " << p.created << " by clm3d " << p.toolVersion << ", seed " << p.seed << "\n";
+  if (!p.notes.empty()) out << "notes: " << p.notes << "\n";
+  if (!model.settingsJson.empty()) out << "settings: " << model.settingsJson << "\n";
+  return out.str();
+}
+
+}  // namespace clm3d

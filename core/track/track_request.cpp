@@ -1,0 +1,186 @@
+#include "core/track/track_request.hpp"
+
+#include <chrono>
+#include <iomanip>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "core/common/atomic_file.hpp"
+#include "core/common/error.hpp"
+#include "core/fit/optimiser.hpp"
+#include "core/model/model_file.hpp"
+#include "core/track/batch_fit.hpp"
+#include "core/track/fit_overlay.hpp"
+#include "core/track/multi_face_tracker.hpp"
+#include "core/track/track_table_writer.hpp"
+#include "core/track/tracker.hpp"
+#include "core/video/video_reader.hpp"
+#include "core/video/video_writer.hpp"
+
+namespace clm3d {
+namespace track_request_detail {
+
+namespace fs = std::filesystem;
+using R = TrackRequest;
+
+std::vector<Option<R>> makeOptions() {
+  return {
+      textOption<R>(requiredOption("model", "trained model (.clm3d)"), &R::model),
+      textOption<R>(requiredOption("video", "video to track"), &R::video),
+      textOption<R>(requiredOption("out", "per-frame tracks (.csv, see docs/tracks-csv.md)"),
+                    &R::out),
+      textOption<R>(commandOption("overlay",
+                                  "also write the video with the landmarks and patches "
+                                  "drawn (.mp4, .avi)"),
+                    &R::overlay),
+      textOption<R>(commandOption("init", "start the first frame from these points"), &R::init),
+      textOption<R>(commandOption("faces",
+                                  "faces to track: 1 (the default: one face, no face column), a "
+                                  "count, or all; each face gets a stable id in the tracks' face "
+                                  "column"),
+                    &R::faces),
+      flagOption<R>(commandOption("quiet", "no progress on stderr"), &R::quiet),
+  };
+}
+
+// --faces: 1 = the single-face track (no face column); "all" = 0 for MultiFaceSettings.
+int parseFaces(const std::string& text) {
+  if (text == "all") return 0;
+  try {
+    std::size_t used = 0;
+    const int count = std::stoi(text, &used);
+    if (used == text.size() && count >= 1) return count;
+  } catch (const std::exception&) {
+    // Reported below.
+  }
+  throw InputError("--faces: expected all or a count of at least 1, got \"" + text + "\"");
+}
+
+std::string summaryText(const R& args, const ClmModel& model, const TrackSummary& summary,
+                        int faces, std::size_t ids, double seconds, bool overlay) {
+  const TrackerSettings& settings = args.tracker;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << "tracked " << summary.frames << " frames of "
+      << args.video.string() << " in " << seconds << " s: ";
+  if (faces == 1) {
+    out << summary.succeeded << " succeeded ("
+        << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0) << "%), ";
+  } else {
+    out << ids << (ids == 1 ? " face, " : " faces, ") << summary.succeeded
+        << " face-frames succeeded, ";
+  }
+  out << summary.detections << " detections\n"
+      << std::setprecision(2) << "fit time per frame: median " << summary.medianMilliseconds()
+      << " ms, 90th percentile " << summary.percentileMilliseconds(0.9) << " ms ("
+      << resolveOptimiser(settings.fit.optimiser, model) << ", "
+      << (settings.fit.scales > 0 ? std::to_string(settings.fit.scales) : std::string("all"))
+      << " scales)\n";
+  if (!summary.unreadable.empty()) {
+    out << "skipped " << summary.unreadableFrames()
+        << " unreadable frames: " << formatFrameSpans(summary.unreadable) << '\n';
+  }
+  out << "tracks: " << args.out.string() << '\n';
+  if (overlay) out << "overlay: " << args.overlay.string() << '\n';
+  return out.str();
+}
+
+CommandReport run(const R& args, const ProgressCallback& progress,
+                  const std::function<void(std::size_t)>& rowsWritten, const CancelToken* cancel) {
+  const int faces = parseFaces(args.faces);
+  if (faces != 1 && !args.init.empty()) {
+    throw InputError("--init starts one face's track: use it without --faces");
+  }
+  const ClmModel model = loadModel(args.model);
+  const Scheme scheme = model.scheme();
+
+  std::optional<FitState> initial;
+  std::unique_ptr<VideoWriter> overlay;
+  {
+    VideoReader probe(args.video);  // fails early, naming the file, if it is not a video
+    const Camera camera = Camera::fromVerticalFov(probe.width(), probe.height(), args.fovDeg);
+    if (!args.init.empty()) initial = stateFromPointsFile(model, camera, args.init);
+    if (!args.overlay.empty()) {
+      overlay =
+          std::make_unique<VideoWriter>(args.overlay, probe.width(), probe.height(), probe.fps());
+    }
+  }
+  const auto begin = std::chrono::steady_clock::now();
+  std::size_t written = 0;  // rows streamed to the output so far
+  const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
+    if (!overlay) return;
+    cv::Mat drawn = frame.clone();
+    drawFitOverlay(drawn, step, tracker.fitter(), scheme);
+    overlay->write(drawn);
+  };
+  const auto perFrameFaces = [&](const cv::Mat& frame, const std::vector<FaceStep>& steps,
+                                 MultiFaceTracker& tracker) {
+    if (!overlay) return;
+    cv::Mat drawn = frame.clone();
+    for (const FaceStep& face : steps) {
+      drawFitOverlay(drawn, face.step, tracker.tracker(face.face).fitter(), scheme);
+    }
+    overlay->write(drawn);
+  };
+  TrackSummary summary;
+  std::set<std::string> ids;  // the face ids written (--faces)
+  bool cancelled = false;
+  // Rows are written as they are made (memory stays flat over a long video) into a temporary file
+  // renamed into place at the end; a cancelled run keeps the frames tracked so far.
+  writeFileAtomically(args.out, [&](std::ostream& out) {
+    TrackTableWriter writer(
+        out, model.shape.pointCount(),
+        faces == 1 ? std::vector<std::string>{} : std::vector<std::string>{"face"});
+    const auto onRow = [&](TrackRow&& row) {
+      if (!row.extraCells.empty()) ids.insert(row.extraCells.front());
+      writer.write(row);
+      ++written;
+      if (rowsWritten) rowsWritten(written);
+    };
+    try {
+      if (faces == 1) {
+        summary =
+            trackVideo(args.video, model, args.tracker, onRow, perFrame, progress, cancel, initial);
+      } else {
+        MultiFaceSettings multi;
+        multi.maxFaces = faces;
+        summary = trackVideoFaces(args.video, model, args.tracker, multi, onRow, perFrameFaces,
+                                  progress, cancel);
+      }
+    } catch (const Cancelled&) {
+      cancelled = true;
+    }
+  });
+  if (overlay) overlay->close();
+  // The rows were streamed before the missing frames were known: mark them now.
+  markUnreadableFrames(args.out, summary.unreadable);
+  CommandReport output;
+  if (const std::string warning = unreadableFramesWarning(args.video, summary); !warning.empty()) {
+    output.warnings = "warning: " + warning + '\n';
+  }
+  if (cancelled) {
+    output.failure =
+        "cancelled after " + std::to_string(written) + " frames; those are in " + args.out.string();
+    return output;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  output.text = summaryText(args, model, summary, faces, ids.size(), seconds, overlay != nullptr);
+  return output;
+}
+
+}  // namespace track_request_detail
+
+const std::vector<Option<TrackRequest>>& trackRequestOptions() {
+  static const std::vector<Option<TrackRequest>> table = track_request_detail::makeOptions();
+  return table;
+}
+
+CommandReport runTrack(const TrackRequest& request, const ProgressCallback& progress,
+                       const std::function<void(std::size_t)>& rowsWritten,
+                       const CancelToken* cancel) {
+  return track_request_detail::run(request, progress, rowsWritten, cancel);
+}
+
+}  // namespace clm3d
