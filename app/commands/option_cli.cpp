@@ -31,7 +31,10 @@ void addSpecOption(CLI::App& command, const OptionSpec& option, const std::strin
   }
   CLI::Option* added = command.add_option_function<std::string>(flag, set, option.help);
   added->default_str(defaultText);
-  if (option.kind == OptionKind::Integer) {
+  if (option.kind == OptionKind::Integer && !option.zeroWord.empty()) {
+    // "all" or a count (--faces): the setter checks both and names the valid values.
+    added->type_name("INT|" + option.zeroWord);
+  } else if (option.kind == OptionKind::Integer) {
     added->type_name("INT")->check(CLI::Range(static_cast<std::int64_t>(option.minimum),
                                               static_cast<std::int64_t>(option.maximum)));
   } else if (option.kind == OptionKind::Real) {

@@ -37,32 +37,18 @@ namespace fs = std::filesystem;
 
 struct TrackArgs {
   fs::path model, video, out, overlay, init;
-  FitOptions fit;           // every tracker option (core/track/tracker_options.hpp)
-  std::string faces = "1";  // --faces: "all" or a count
+  FitOptions fit;  // every tracker option (core/track/tracker_options.hpp), --faces too
   bool quiet = false;
 };
 
-// --faces: 1 = today's single-face track (no face column); "all" = 0 for MultiFaceSettings.
-int parseFaces(const std::string& text) {
-  if (text == "all") return 0;
-  try {
-    std::size_t used = 0;
-    const int count = std::stoi(text, &used);
-    if (used == text.size() && count >= 1) return count;
-  } catch (const std::exception&) {
-    // Reported below.
-  }
-  throw InputError("--faces: expected all or a count of at least 1, got \"" + text + "\"");
-}
-
 void runTrack(const TrackArgs& args) {
-  const int faces = parseFaces(args.faces);
-  if (faces != 1 && !args.init.empty()) {
+  const TrackerSettings& settings = args.fit.tracker;
+  const bool faceByFace = tracksFaceByFace(settings);
+  if (faceByFace && !args.init.empty()) {
     throw InputError("--init starts one face's track: use it without --faces");
   }
   const ClmModel model = loadModel(args.model);
   const Scheme scheme = model.scheme();
-  const TrackerSettings& settings = args.fit.tracker;
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
@@ -107,21 +93,19 @@ void runTrack(const TrackArgs& args) {
   writeFileAtomically(args.out, [&](std::ostream& out) {
     TrackTableWriter writer(
         out, model.shape.pointCount(),
-        faces == 1 ? std::vector<std::string>{} : std::vector<std::string>{"face"});
+        faceByFace ? std::vector<std::string>{"face"} : std::vector<std::string>{});
     const auto onRow = [&](TrackRow&& row) {
       if (!row.extraCells.empty()) ids.insert(row.extraCells.front());
       writer.write(row);
       ++written;
     };
     try {
-      if (faces == 1) {
+      if (faceByFace) {
+        summary = trackVideoFaces(args.video, model, settings, multiFaceSettings(settings), onRow,
+                                  perFrameFaces, progress.callback(), &interrupt.token());
+      } else {
         summary = trackVideo(args.video, model, settings, onRow, perFrame, progress.callback(),
                              &interrupt.token(), initial);
-      } else {
-        MultiFaceSettings multi;
-        multi.maxFaces = faces;
-        summary = trackVideoFaces(args.video, model, settings, multi, onRow, perFrameFaces,
-                                  progress.callback(), &interrupt.token());
       }
     } catch (const Cancelled&) {
       cancelled = true;
@@ -144,7 +128,7 @@ void runTrack(const TrackArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   std::cout << std::fixed << std::setprecision(1) << "tracked " << summary.frames << " frames of "
             << args.video.string() << " in " << seconds << " s: ";
-  if (faces == 1) {
+  if (!faceByFace) {
     std::cout << summary.succeeded << " succeeded ("
               << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0) << "%), ";
   } else {
@@ -177,11 +161,6 @@ void addTrackCommand(CLI::App& root) {
   command->add_option("--overlay", args->overlay,
                       "also write the video with the landmarks and patches drawn (.mp4, .avi)");
   command->add_option("--init", args->init, "start the first frame from these points");
-  command
-      ->add_option("--faces", args->faces,
-                   "faces to track: 1 (the default: one face, no face column), a count, or "
-                   "all; each face gets a stable id in the tracks' face column")
-      ->default_str("1");
   command->add_flag("--quiet", args->quiet, "no progress on stderr");
   addFitOptions(*command, args->fit, OptionCommand::Track);
   command->callback([args] { runTrack(*args); });
