@@ -93,6 +93,13 @@ const TrackRow* TrackSession::truthRow(int face, int frame) const {
   return nullptr;
 }
 
+bool TrackSession::inFrame(int frame) const {
+  if (!multiFace_) return true;
+  const std::vector<bool>& present = active().present;
+  const auto f = static_cast<std::size_t>(frame);
+  return (frame >= 0 && f < present.size() && present[f]) || truthRow(selectedFace(), frame);
+}
+
 const std::optional<FrameFit>& TrackSession::fit(int frame) const {
   static const std::optional<FrameFit> none;
   const auto& fits = active().fits;

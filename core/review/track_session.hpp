@@ -86,6 +86,9 @@ class TrackSession {
   GroundTruthSet& truth(int face);
   // A face's truth row of a frame, nullptr if it has none with points.
   const TrackRow* truthRow(int face, int frame) const;
+  // Whether the selected face is in the frame: one face always is; face by face, when the tracker
+  // (or the loaded file) gave it a row there or its ground truth has points there.
+  bool inFrame(int frame) const;
 
   // The tracker's rows (row i is frame i once tracked; fewer rows after a cancelled run) and fits.
   const TrackTable& track() const { return active().track; }

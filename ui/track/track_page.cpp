@@ -806,7 +806,8 @@ void TrackPage::refreshTimeline() {
   TimelineData timeline;
   timeline.frameCount = session_.video().frameCount;
   for (const TrackRow& row : session_.track().rows) {
-    timeline.confidence.push_back(row.confidence);
+    // Face by face, the frames the selected face is not in show nothing (not failed).
+    timeline.confidence.push_back(session_.inFrame(row.frame) ? row.confidence : std::nan(""));
     timeline.success.push_back(row.success);
   }
   timeline.keyframe = session_.truth().keyframe;

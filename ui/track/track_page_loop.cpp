@@ -265,8 +265,12 @@ void TrackPage::refreshReviewList() {
   if (!scheme) return;  // no eye points to measure jumps by
   ReviewListSettings settings;
   settings.lowConfidence = review_->lowConfidence();
-  reviewList_ =
-      rankFramesForReview(truth.table, truth.keyframe, scheme->normalisationPair(), settings);
+  // Face by face, the frames the face is not in are left out as keyframes are (nothing to fix).
+  std::vector<bool> leftOut = truth.keyframe;
+  for (int f = 0; f < static_cast<int>(leftOut.size()); ++f) {
+    if (!session_.inFrame(f)) leftOut[static_cast<std::size_t>(f)] = true;
+  }
+  reviewList_ = rankFramesForReview(truth.table, leftOut, scheme->normalisationPair(), settings);
 }
 
 bool TrackPage::goToNextToReview(int step) {

@@ -75,6 +75,24 @@ class TrackReviewTest : public QObject {
   TrackTable truth_;
   std::unique_ptr<TrackPage> page_;
 
+  static constexpr int kTwoFrames = 6;
+  fs::path twoVideo_;
+  std::vector<test::TwoFaceFrame> twoFrames_;
+
+  // Two procedural heads in one video (tests/support/two_faces.hpp), made once.
+  const fs::path& twoFaceVideo() {
+    if (!twoVideo_.empty()) return twoVideo_;
+    twoVideo_ = project_.folder / "videos" / "two" / "two.avi";
+    test::runOffGuiThread([&] {
+      twoFrames_ = test::twoFaceFrames(kTwoFrames, 10);
+      fs::create_directories(twoVideo_.parent_path());
+      VideoWriter writer(twoVideo_, 640, 520, 25.0);
+      for (const auto& frame : twoFrames_) writer.write(frame.image);
+      writer.close();
+    });
+    return twoVideo_;
+  }
+
   void openPage() {
     page_ = std::make_unique<TrackPage>();
     QVERIFY(test::showForTest(*page_, {1280, 820}));
@@ -227,17 +245,9 @@ class TrackReviewTest : public QObject {
   // Two procedural heads in one video (tests/support/two_faces.hpp) and their truth as a two-face
   // track: face 0 the top head, face 1 the bottom one.
   void twoFacesAreDrawnAndCorrectedFaceByFace() {
-    constexpr int kTwoFrames = 6;
-    const fs::path video = project_.folder / "videos" / "two" / "two.avi";
+    const fs::path& video = twoFaceVideo();
+    const std::vector<test::TwoFaceFrame>& frames = twoFrames_;
     const fs::path csv = temp_.path() / "two-faces.csv";
-    std::vector<test::TwoFaceFrame> frames;
-    test::runOffGuiThread([&] {
-      frames = test::twoFaceFrames(kTwoFrames, 10);
-      fs::create_directories(video.parent_path());
-      VideoWriter writer(video, 640, 520, 25.0);
-      for (const auto& frame : frames) writer.write(frame.image);
-      writer.close();
-    });
     TrackTable faces;
     faces.landmarkCount = static_cast<int>(frames[0].top.cols());
     faces.extraColumns = {"face"};
@@ -342,6 +352,37 @@ class TrackReviewTest : public QObject {
       QVERIFY(samePoints(session.truth(0).table.rows[i].points, face0Truth.table.rows[i].points));
     }
     page_->undoStack()->setClean();
+  }
+
+  // Faces to track = all (the settings' --faces) tracks the two heads with trackVideoFaces, as
+  // `clm3d track --faces all` does: two faces, each on its head, the tracks CSV with the face
+  // column.
+  void trackingEveryFaceFromTheSettingsGivesEachFaceItsTrack() {
+    if (!page_) {
+      openPage();
+      page_->setProject(&project_);
+    }
+    QVERIFY(page_->openVideo(twoFaceVideo()));
+    TrackerSettings settings = page_->trackerSettings();
+    settings.faces = 0;  // all
+    page_->setTrackerSettings(settings);
+    QCOMPARE(project_.trackerOptions.at("faces"), std::string("all"));
+    QVERIFY(page_->startTracking());
+    QVERIFY(test::waitUntil([&] { return !page_->isBusy(); }, 60000));
+    const TrackSession& session = page_->session();
+    QVERIFY(session.multiFace());
+    QCOMPARE(session.faces().size(), std::size_t{2});
+    for (const TrackSession::Face& face : session.faces()) {
+      const TrackRow& first = face.track.rows[0];
+      QVERIFY(first.success);
+      const double top = test::meanPointError(first.points, twoFrames_[0].top);
+      const double bottom = test::meanPointError(first.points, twoFrames_[0].bottom);
+      QVERIFY2(std::min(top, bottom) < 6.0, qPrintable(QString("%1 %2").arg(top).arg(bottom)));
+    }
+    const TrackTable saved = readTrackTable(page_->tracksCsv());
+    QCOMPARE(saved.extraColumns, std::vector<std::string>{"face"});
+    QCOMPARE(saved.rows.size(), std::size_t{2 * kTwoFrames});
+    page_->setTrackerSettings(TrackerSettings{});
   }
 
   void cleanupTestCase() { page_.reset(); }

@@ -307,6 +307,8 @@ TEST_F(TrackSessionTest, SeveralFacesAreSplitByFaceAndTheSelectedOneIsCorrected)
   EXPECT_TRUE(session.fit(3).has_value());
   EXPECT_FALSE(session.hasPoints(1));
   EXPECT_TRUE(session.hasPoints(2));
+  EXPECT_FALSE(session.inFrame(1));  // the timeline and the review list leave it out
+  EXPECT_TRUE(session.inFrame(2));
 
   // A correction and a re-track of face 1 change face 1's rows only.
   session.truth().setKeyframe(4, row(4, 210.0).points);
