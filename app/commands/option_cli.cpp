@@ -70,7 +70,10 @@ CLI::Option* addSpecOption(CLI::App& command, const OptionSpec& option,
   }
   CLI::Option* added = command.add_option_function<std::string>(flag, set, option.help);
   added->default_str(defaultText)->required(option.required);
-  if (option.kind == OptionKind::Integer) {
+  if (option.kind == OptionKind::Integer && !option.zeroWord.empty()) {
+    // "all" or a count (--faces): the setter checks both and names the valid values.
+    added->type_name("INT|" + option.zeroWord);
+  } else if (option.kind == OptionKind::Integer) {
     added->type_name("INT")->check(CLI::Range(static_cast<std::int64_t>(option.minimum),
                                               static_cast<std::int64_t>(option.maximum)));
   } else if (option.kind == OptionKind::Real) {

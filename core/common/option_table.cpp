@@ -71,12 +71,14 @@ std::string optionRealText(double value) {
 std::string optionRangeText(const OptionSpec& option) {
   if (option.kind == OptionKind::Integer) {
     return std::to_string(static_cast<std::int64_t>(option.minimum)) + ".." +
-           std::to_string(static_cast<std::int64_t>(option.maximum));
+           std::to_string(static_cast<std::int64_t>(option.maximum)) +
+           (option.zeroWord.empty() ? std::string() : " or " + option.zeroWord);
   }
   return optionRealText(option.minimum) + ".." + optionRealText(option.maximum);
 }
 
 long long parseOptionInteger(const OptionSpec& option, std::string_view text) {
+  if (!option.zeroWord.empty() && text == option.zeroWord) return 0;
   return parseNumber<long long>(option, text, "a whole number");
 }
 

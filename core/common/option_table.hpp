@@ -72,6 +72,9 @@ struct OptionSpec {
   OptionCommands commands{};
   bool required = false;    // a command's own table: the command cannot run without it
   bool repeatable = false;  // given several times, its values one a line (textListOption)
+  // Integer: a word standing for the value 0 below the range (e.g. "all" for `--faces all`): 0
+  // is written as it and read from it, and the studio's spin box shows it below the minimum.
+  std::string zeroWord{};
 };
 
 // A command's own option (no studio label or group): name, help and, for numbers, the range.
@@ -92,7 +95,8 @@ inline OptionSpec requiredOption(std::string name, std::string help) {
 
 // The shortest text that reads back to the same double.
 std::string optionRealText(double value);
-// "1..5" or "0.05..1": the option's range as the errors and the help say it.
+// "1..5" or "0.05..1" ("1..50 or all" with a zeroWord): the option's range as the errors and the
+// help say it.
 std::string optionRangeText(const OptionSpec& option);
 // The option's value parsed from `text` and checked against its range or choices; InputError
 // naming the option (--name), the text and what is valid otherwise.
@@ -149,8 +153,12 @@ Option<Settings> fieldOption(OptionSpec spec, OptionKind kind, Field field, ToTe
 template <typename Settings, typename Field>
 Option<Settings> integerOption(OptionSpec spec, Field field) {
   spec.decimals = 0;
+  std::string word = spec.zeroWord;
   return fieldOption<Settings>(
-      std::move(spec), OptionKind::Integer, field, [](auto value) { return std::to_string(value); },
+      std::move(spec), OptionKind::Integer, field,
+      [word = std::move(word)](auto value) {
+        return value == 0 && !word.empty() ? word : std::to_string(value);
+      },
       parseOptionInteger);
 }
 

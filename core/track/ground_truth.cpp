@@ -226,37 +226,43 @@ void saveGroundTruth(const std::filesystem::path& csv, const GroundTruthSet& set
   }
 }
 
+GroundTruthSet groundTruthFromTable(const TrackTable& table, int frameCount,
+                                    const std::filesystem::path& source,
+                                    const std::function<int(std::size_t)>& lineOf) {
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    if (table.rows[r].frame >= kMaxGroundTruthFrames) {
+      throwInputError(source,
+                      "frame " + std::to_string(table.rows[r].frame) + " is beyond the " +
+                          std::to_string(kMaxGroundTruthFrames) + " frames a ground truth may have",
+                      lineOf ? lineOf(r) : 0);
+    }
+  }
+  const auto column =
+      std::find(table.extraColumns.begin(), table.extraColumns.end(), kKeyframeColumn);
+  const bool hasKeyframes = column != table.extraColumns.end();
+  const auto keyColumn = static_cast<std::size_t>(column - table.extraColumns.begin());
+  GroundTruthSet set = GroundTruthSet::fromTrack(table, frameCount);  // drops the extra columns
+  if (!hasKeyframes) return set;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& cells = table.rows[r].extraCells;
+    const std::string cell = keyColumn < cells.size() ? cells[keyColumn] : std::string();
+    if (cell != "0" && cell != "1") {
+      throwInputError(source, "column keyframe: \"" + cell + "\" is not 0 or 1",
+                      lineOf ? lineOf(r) : 0);
+    }
+    set.keyframe[static_cast<std::size_t>(table.rows[r].frame)] = cell == "1";
+  }
+  return set;
+}
+
 GroundTruthSet loadGroundTruth(const std::filesystem::path& csv) {
   const std::string text = readTextFile(csv);
   const TrackTable table = parseTrackTable(text, csv.string());
   int frames = 0;
   for (const auto& row : table.rows) frames = std::max(frames, row.frame + 1);
-
-  const auto column =
-      std::find(table.extraColumns.begin(), table.extraColumns.end(), kKeyframeColumn);
-  const bool hasKeyframes = column != table.extraColumns.end();
-  const auto keyColumn = static_cast<std::size_t>(column - table.extraColumns.begin());
   const auto lines = dataLineNumbers(text);
-  const auto lineOf = [&](std::size_t row) { return row < lines.size() ? lines[row] : 0; };
-
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    if (table.rows[r].frame >= kMaxGroundTruthFrames) {
-      throwInputError(csv,
-                      "frame " + std::to_string(table.rows[r].frame) + " is beyond the " +
-                          std::to_string(kMaxGroundTruthFrames) + " frames a ground truth may have",
-                      lineOf(r));
-    }
-  }
-  GroundTruthSet set = GroundTruthSet::fromTrack(table, frames);  // drops the extra columns
-  if (!hasKeyframes) return set;
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    const auto& cell = table.rows[r].extraCells[keyColumn];
-    if (cell != "0" && cell != "1") {
-      throwInputError(csv, "column keyframe: \"" + cell + "\" is not 0 or 1", lineOf(r));
-    }
-    set.keyframe[static_cast<std::size_t>(table.rows[r].frame)] = cell == "1";
-  }
-  return set;
+  return groundTruthFromTable(table, std::min(frames, kMaxGroundTruthFrames), csv,
+                              [&](std::size_t row) { return row < lines.size() ? lines[row] : 0; });
 }
 
 }  // namespace clm3d

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "core/track/track_table.hpp"
@@ -58,6 +59,14 @@ std::filesystem::path groundTruthPtsName(int frame);
 // InputError naming the file (and line) for a malformed table, a keyframe cell other than 0/1, or
 // a frame beyond kMaxGroundTruthFrames.
 GroundTruthSet loadGroundTruth(const std::filesystem::path& csv);
+
+// The set a table read from `source` holds (loadGroundTruth's rules): its rows as fromTrack gives
+// them up to frameCount, keyframes from its keyframe column when it has one. InputError naming
+// `source` (and the line lineOf gives a row, when given) for a keyframe cell other than 0/1 or a
+// frame beyond kMaxGroundTruthFrames; fromTrack's for a frame at or beyond frameCount.
+GroundTruthSet groundTruthFromTable(const TrackTable& table, int frameCount,
+                                    const std::filesystem::path& source,
+                                    const std::function<int(std::size_t)>& lineOf = {});
 
 // Most frames a ground truth may have (about 9 hours at 30 fps), so a stray huge frame number is
 // reported instead of allocating gigabytes.

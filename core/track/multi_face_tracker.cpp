@@ -52,6 +52,16 @@ bool followedAlready(const PlacedFace& face, const std::vector<PlacedFace>& trac
 
 }  // namespace
 
+bool tracksFaceByFace(const TrackerSettings& settings) {
+  return settings.faces != 1;
+}
+
+MultiFaceSettings multiFaceSettings(const TrackerSettings& settings) {
+  MultiFaceSettings faces;
+  faces.maxFaces = settings.faces;
+  return faces;
+}
+
 MultiFaceTracker::MultiFaceTracker(const ClmModel& model, const Camera& camera,
                                    const TrackerSettings& settings, const MultiFaceSettings& faces)
     : model_(&model),

@@ -33,6 +33,12 @@ struct FaceStep {
   TrackStep step;
 };
 
+// What TrackerSettings::faces (`clm3d track --faces`, the studio's "Faces to track") asks for:
+// whether the video is tracked face by face (trackVideoFaces, rows with a `face` column) rather
+// than as one face (trackVideo, no face column), and the MultiFaceSettings it is tracked with.
+bool tracksFaceByFace(const TrackerSettings& settings);
+MultiFaceSettings multiFaceSettings(const TrackerSettings& settings);
+
 class MultiFaceTracker {
  public:
   // InputError for a negative maxFaces or a detectEvery below 1.

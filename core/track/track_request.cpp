@@ -36,35 +36,17 @@ std::vector<Option<R>> makeOptions() {
                                   "drawn (.mp4, .avi)"),
                     &R::overlay),
       textOption<R>(commandOption("init", "start the first frame from these points"), &R::init),
-      textOption<R>(commandOption("faces",
-                                  "faces to track: 1 (the default: one face, no face column), a "
-                                  "count, or all; each face gets a stable id in the tracks' face "
-                                  "column"),
-                    &R::faces),
       flagOption<R>(commandOption("quiet", "no progress on stderr"), &R::quiet),
   };
 }
 
-// --faces: 1 = the single-face track (no face column); "all" = 0 for MultiFaceSettings.
-int parseFaces(const std::string& text) {
-  if (text == "all") return 0;
-  try {
-    std::size_t used = 0;
-    const int count = std::stoi(text, &used);
-    if (used == text.size() && count >= 1) return count;
-  } catch (const std::exception&) {
-    // Reported below.
-  }
-  throw InputError("--faces: expected all or a count of at least 1, got \"" + text + "\"");
-}
-
 std::string summaryText(const R& args, const ClmModel& model, const TrackSummary& summary,
-                        int faces, std::size_t ids, double seconds, bool overlay) {
+                        bool faceByFace, std::size_t ids, double seconds, bool overlay) {
   const TrackerSettings& settings = args.tracker;
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "tracked " << summary.frames << " frames of "
       << args.video.string() << " in " << seconds << " s: ";
-  if (faces == 1) {
+  if (!faceByFace) {
     out << summary.succeeded << " succeeded ("
         << (summary.frames ? 100.0 * summary.succeeded / summary.frames : 0.0) << "%), ";
   } else {
@@ -88,8 +70,8 @@ std::string summaryText(const R& args, const ClmModel& model, const TrackSummary
 
 CommandReport run(const R& args, const ProgressCallback& progress,
                   const std::function<void(std::size_t)>& rowsWritten, const CancelToken* cancel) {
-  const int faces = parseFaces(args.faces);
-  if (faces != 1 && !args.init.empty()) {
+  const bool faceByFace = tracksFaceByFace(args.tracker);
+  if (faceByFace && !args.init.empty()) {
     throw InputError("--init starts one face's track: use it without --faces");
   }
   const ClmModel model = loadModel(args.model);
@@ -131,7 +113,7 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   writeFileAtomically(args.out, [&](std::ostream& out) {
     TrackTableWriter writer(
         out, model.shape.pointCount(),
-        faces == 1 ? std::vector<std::string>{} : std::vector<std::string>{"face"});
+        faceByFace ? std::vector<std::string>{"face"} : std::vector<std::string>{});
     const auto onRow = [&](TrackRow&& row) {
       if (!row.extraCells.empty()) ids.insert(row.extraCells.front());
       writer.write(row);
@@ -139,14 +121,12 @@ CommandReport run(const R& args, const ProgressCallback& progress,
       if (rowsWritten) rowsWritten(written);
     };
     try {
-      if (faces == 1) {
+      if (faceByFace) {
+        summary = trackVideoFaces(args.video, model, args.tracker, multiFaceSettings(args.tracker),
+                                  onRow, perFrameFaces, progress, cancel);
+      } else {
         summary =
             trackVideo(args.video, model, args.tracker, onRow, perFrame, progress, cancel, initial);
-      } else {
-        MultiFaceSettings multi;
-        multi.maxFaces = faces;
-        summary = trackVideoFaces(args.video, model, args.tracker, multi, onRow, perFrameFaces,
-                                  progress, cancel);
       }
     } catch (const Cancelled&) {
       cancelled = true;
@@ -166,7 +146,8 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  output.text = summaryText(args, model, summary, faces, ids.size(), seconds, overlay != nullptr);
+  output.text =
+      summaryText(args, model, summary, faceByFace, ids.size(), seconds, overlay != nullptr);
   return output;
 }
 

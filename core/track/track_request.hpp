@@ -1,5 +1,5 @@
 // What `clm3d track` is asked for besides the tracker table's Track options (core/track/
-// tracker_options, which the CLI adds itself): the files and the faces, described once as an
+// tracker_options, --faces among them, which the CLI adds itself): the files, described once as an
 // option table, and its run: the video tracked (one face, or every face with a face column),
 // the rows streamed into the tracks CSV, the overlay video drawn, the summary to print. A run
 // cancelled keeps the frames tracked so far; the output's failure then says so.
@@ -21,7 +21,6 @@ namespace clm3d {
 
 struct TrackRequest {
   std::filesystem::path model, video, out, overlay, init;
-  std::string faces = "1";  // "all" or a count
   bool quiet = false;
   // From the tracker table's Track options and --fov, which the CLI adds beside these.
   TrackerSettings tracker;

@@ -127,6 +127,11 @@ struct TrackerSettings {
   // when the check's probability that its refined points are right is below this; the search's
   // confidence thresholds above are then not applied.
   double minCheckProbability = 0.5;
+  // Faces tracked at once (`clm3d track --faces`, the studio's "Faces to track"): 1 = one face
+  // (trackVideo, a tracks table without a face column), N = at most N, 0 = every face
+  // (trackVideoFaces, core/track/multi_face_tracker.hpp). A Tracker follows one face and does not
+  // read it.
+  int faces = 1;
 
   bool operator==(const TrackerSettings&) const = default;
 };

@@ -265,6 +265,22 @@ std::vector<TrackerOption> buildOptions() {
                          "speed (higher: less lag when moving)",
                          [](S& s) -> double& { return s.smoothing.beta; }));
 
+  // --- Faces (clm3d track; core/track/multi_face_tracker.hpp) -----------------------------------
+  // Not batch's: its summary and resuming count one track per video.
+  OptionSpec faces{"faces",
+                   "Faces to track",
+                   "Faces",
+                   OptionKind::Integer,
+                   "faces to track: 1 (one face, no face column), a count, or all; each face "
+                   "gets a stable id in the tracks' face column (docs/tracking.md#every-face)",
+                   1.0,
+                   50.0,
+                   0,
+                   {}};
+  faces.zeroWord = "all";
+  options.push_back(scoped(integerOption<S>(std::move(faces), [](S& s) -> int& { return s.faces; }),
+                           only(C::Track)));
+
   return options;
 }
 

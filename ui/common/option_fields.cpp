@@ -27,6 +27,11 @@ QWidget* makeOptionField(const OptionSpec& option, QWidget* parent,
     case OptionKind::Integer: {
       auto* spin = new QSpinBox(parent);
       spin->setRange(static_cast<int>(option.minimum), static_cast<int>(option.maximum));
+      if (!option.zeroWord.empty()) {
+        // The word ("all") is the value 0, one step below the range.
+        spin->setMinimum(0);
+        spin->setSpecialValueText(qText(option.zeroWord));
+      }
       QObject::connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), parent,
                        [changed] { changed(); });
       widget = spin;
@@ -69,6 +74,9 @@ QWidget* makeOptionField(const OptionSpec& option, QWidget* parent,
 
 std::string optionFieldText(const QWidget* field) {
   if (const auto* spin = qobject_cast<const QSpinBox*>(field)) {
+    if (spin->value() == spin->minimum() && !spin->specialValueText().isEmpty()) {
+      return spin->specialValueText().toStdString();  // an option's zeroWord
+    }
     return std::to_string(spin->value());
   }
   if (const auto* real = qobject_cast<const QDoubleSpinBox*>(field)) {
@@ -105,6 +113,7 @@ QString optionTooltip(const OptionSpec& option, const std::string& defaultText) 
   QString range;
   if (option.kind == OptionKind::Integer || option.kind == OptionKind::Real) {
     range = QObject::tr(", range %1 to %2").arg(option.minimum).arg(option.maximum);
+    if (!option.zeroWord.empty()) range += QObject::tr(" or %1").arg(qText(option.zeroWord));
   } else if (option.kind == OptionKind::RealList) {
     range = QObject::tr(", each within %1 to %2").arg(option.minimum).arg(option.maximum);
   } else if (option.kind == OptionKind::Choice) {

@@ -4,11 +4,15 @@
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace clm3d::ui {
 namespace {
 
 constexpr double kGrabRadius = 9.0;  // widget pixels around a landmark that start a drag
+// A press within this many widget pixels of another face's landmarks (or inside their box) picks
+// that face.
+constexpr double kFaceRadius = 3.0 * kGrabRadius;
 
 }  // namespace
 
@@ -30,6 +34,63 @@ void FrameView::setLandmarks(const Eigen::Matrix2Xd& points, const std::vector<Q
   colours_ = colours;
   marks_ = marks;
   update();
+}
+
+void FrameView::setFaces(std::vector<FaceOverlay> others, const QString& selectedLabel,
+                         const QColor& selectedColour) {
+  others_ = std::move(others);
+  selectedLabel_ = selectedLabel;
+  selectedColour_ = selectedColour;
+  update();
+}
+
+int FrameView::faceAt(const QPointF& widgetPoint) const {
+  int best = -1;
+  double bestDistance = kFaceRadius;
+  for (const FaceOverlay& face : others_) {
+    // Distance to the face: 0 inside the box of its points, else to its nearest point.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    double distance = kInf;
+    double left = kInf, top = kInf, right = -kInf, bottom = -kInf;
+    for (Eigen::Index i = 0; i < face.points.cols(); ++i) {
+      if (!face.points.col(i).allFinite()) continue;
+      const QPointF p = toWidget({face.points(0, i), face.points(1, i)});
+      left = std::min(left, p.x());
+      right = std::max(right, p.x());
+      top = std::min(top, p.y());
+      bottom = std::max(bottom, p.y());
+      distance = std::min(distance, std::hypot(p.x() - widgetPoint.x(), p.y() - widgetPoint.y()));
+    }
+    if (widgetPoint.x() >= left && widgetPoint.x() <= right && widgetPoint.y() >= top &&
+        widgetPoint.y() <= bottom) {
+      distance = 0.0;
+    }
+    if (distance <= bestDistance) {
+      bestDistance = distance;
+      best = face.face;
+    }
+  }
+  return best;
+}
+
+void FrameView::drawFaceLabel(QPainter& painter, const Eigen::Matrix2Xd& points,
+                              const QString& text, const QColor& colour) const {
+  double left = 1e300;
+  double top = 1e300;
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    if (!points.col(i).allFinite()) continue;
+    const QPointF p = toWidget({points(0, i), points(1, i)});
+    left = std::min(left, p.x());
+    top = std::min(top, p.y());
+  }
+  if (left > 1e299) return;
+  QFont font = painter.font();
+  font.setBold(true);
+  painter.setFont(font);
+  const QRectF box = painter.boundingRect(QRectF(left, top - 22, 200, 20), Qt::AlignLeft, text);
+  painter.fillRect(box.adjusted(-3, -1, 3, 1), QColor(0, 0, 0, 170));
+  painter.setPen(colour);
+  painter.drawText(box, Qt::AlignLeft, text);
 }
 
 double FrameView::landmarkRadius() const {
@@ -95,6 +156,17 @@ void FrameView::paintEvent(QPaintEvent*) {
   painter.drawImage(imageRect(), image_);
   painter.setRenderHint(QPainter::Antialiasing);
   const double radius = landmarkRadius();
+  for (const FaceOverlay& face : others_) {
+    painter.setPen(QPen(Qt::black, 1.0));
+    painter.setBrush(face.colour);
+    for (Eigen::Index i = 0; i < face.points.cols(); ++i) {
+      if (!face.points.col(i).allFinite()) continue;
+      painter.drawEllipse(toWidget({face.points(0, i), face.points(1, i)}), radius * 0.8,
+                          radius * 0.8);
+    }
+    drawFaceLabel(painter, face.points, tr("face %1").arg(face.face), face.colour);
+  }
+  if (!selectedLabel_.isEmpty()) drawFaceLabel(painter, points_, selectedLabel_, selectedColour_);
   for (int i = 0; i < points_.cols(); ++i) {
     if (!points_.col(i).allFinite()) continue;
     const QPointF p = toWidget({points_(0, i), points_(1, i)});
@@ -133,8 +205,16 @@ void FrameView::paintEvent(QPaintEvent*) {
 }
 
 void FrameView::mousePressEvent(QMouseEvent* event) {
-  if (!editable_ || event->button() != Qt::LeftButton) return;
-  dragged_ = landmarkAt(event->localPos());
+  if (event->button() != Qt::LeftButton) return;
+  const int own = landmarkAt(event->localPos());
+  if (own < 0 && !others_.empty()) {
+    if (const int face = faceAt(event->localPos()); face >= 0) {
+      emit faceClicked(face);
+      return;
+    }
+  }
+  if (!editable_) return;
+  dragged_ = own;
   if (dragged_ >= 0) {
     dragStart_ = {points_(0, dragged_), points_(1, dragged_)};
     setCursor(Qt::ClosedHandCursor);

@@ -3,7 +3,9 @@
 // says of each landmark is drawn too: a hidden one (visible_k = 0) as a hollow ring, one whose own
 // confidence is low (conf_k below the threshold) with a red ring around it. A landmark can be
 // dragged with the mouse: it follows the pointer and, on release, landmarkMoved reports where it
-// went in frame pixels, so the page turns a whole drag into one undo step.
+// went in frame pixels, so the page turns a whole drag into one undo step. In a video tracked face
+// by face, the other faces are drawn too, each in its colour with its id (not draggable), and a
+// click near one reports it (faceClicked) so the page can select it.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,6 +24,14 @@ struct LandmarkMark {
   bool lowConfidence = false;  // the fit's confidence in it is low: a red ring around it
 };
 
+// A face other than the one being corrected: its points (2 x n frame pixels, NaN not drawn), its
+// id and colour.
+struct FaceOverlay {
+  int face = 0;
+  Eigen::Matrix2Xd points;
+  QColor colour;
+};
+
 class FrameView : public QWidget {
   Q_OBJECT
  public:
@@ -38,6 +48,11 @@ class FrameView : public QWidget {
   double landmarkRadius() const;
   static constexpr double kLowConfidenceRing = 1.9;
   void setLabel(const QString& text, bool keyframe);
+  // Face by face: the other faces, and the id label of the landmarks of setLandmarks (empty: one
+  // face, no labels).
+  void setFaces(std::vector<FaceOverlay> others, const QString& selectedLabel,
+                const QColor& selectedColour);
+  const std::vector<FaceOverlay>& otherFaces() const { return others_; }
   void setEditable(bool editable) { editable_ = editable; }
 
   // Where frame pixel p is in the widget, and back (for tests and drawing).
@@ -49,6 +64,8 @@ class FrameView : public QWidget {
 
  signals:
   void landmarkMoved(int index, QPointF from, QPointF to);
+  // A press on none of the landmarks being corrected but near another face's.
+  void faceClicked(int face);
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -59,6 +76,9 @@ class FrameView : public QWidget {
  private:
   QRectF imageRect() const;
   int landmarkAt(const QPointF& widgetPoint) const;
+  int faceAt(const QPointF& widgetPoint) const;  // -1 when no other face is near
+  void drawFaceLabel(QPainter& painter, const Eigen::Matrix2Xd& points, const QString& text,
+                     const QColor& colour) const;
 
   QImage image_;
   Eigen::Matrix2Xd points_;
@@ -66,6 +86,9 @@ class FrameView : public QWidget {
   std::vector<LandmarkMark> marks_;
   QString label_;
   bool keyframe_ = false;
+  std::vector<FaceOverlay> others_;
+  QString selectedLabel_;
+  QColor selectedColour_;
   bool editable_ = true;
   int dragged_ = -1;
   QPointF dragStart_;

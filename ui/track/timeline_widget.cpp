@@ -72,6 +72,7 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
     const double step = plot.width() / n;
     const double gap = step > 4 ? 1.0 : 0.0;
     for (int f = 0; f < n && f < static_cast<int>(data_.confidence.size()); ++f) {
+      if (std::isnan(data_.confidence[static_cast<std::size_t>(f)])) continue;
       const double c = std::clamp(data_.confidence[static_cast<std::size_t>(f)], 0.0, 1.0);
       const bool ok =
           f < static_cast<int>(data_.success.size()) && data_.success[static_cast<std::size_t>(f)];

@@ -12,11 +12,13 @@ namespace clm3d::ui {
 
 struct TimelineData {
   int frameCount = 0;
-  std::vector<double> confidence;  // per tracked frame, in [-1, 1]; shorter = not tracked yet
-  std::vector<bool> success;       // per tracked frame
-  std::vector<bool> keyframe;      // per frame
-  std::vector<double> error;       // per frame, NaN where unknown
-  std::vector<int> review;         // frames worth a look (core/track/review_list), any order
+  // Per tracked frame, in [-1, 1]; shorter = not tracked yet; NaN = nothing to show (face by face,
+  // a frame the face is not in).
+  std::vector<double> confidence;
+  std::vector<bool> success;   // per tracked frame
+  std::vector<bool> keyframe;  // per frame
+  std::vector<double> error;   // per frame, NaN where unknown
+  std::vector<int> review;     // frames worth a look (core/track/review_list), any order
 };
 
 class TimelineWidget : public QWidget {

@@ -6,6 +6,7 @@
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
 #include "core/review/review_overlay.hpp"
+#include "core/track/multi_face_tracker.hpp"
 #include "core/track/retrack.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
@@ -48,9 +49,31 @@ JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path model
           outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
     outcome->model = modelOrLoad(model, modelPath, progress);
     cancel.throwIfCancelled();
-    outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
-                                  recordFits(outcome->fits, 0), progress, &cancel);
-    outcome->fits.resize(outcome->table.rows.size());  // unreadable frames at the end
+    if (tracksFaceByFace(settings)) {
+      // As `clm3d track --faces`: the rows arrive with their face id in the first extra cell.
+      outcome->table.landmarkCount = outcome->model->shape.pointCount();
+      outcome->table.extraColumns = {"face"};
+      const auto keepFits = [&fits = outcome->faceFits](const cv::Mat&,
+                                                        const std::vector<FaceStep>& steps,
+                                                        MultiFaceTracker&) {
+        for (const FaceStep& face : steps) {
+          if (!face.step.fit) continue;
+          auto& faceFits = fits[face.face];
+          const auto frame = static_cast<std::size_t>(face.step.row.frame);
+          if (faceFits.size() <= frame) faceFits.resize(frame + 1);
+          faceFits[frame] = FrameFit{face.step.fit->state, face.step.fit->view};
+        }
+      };
+      // Cancelled leaves the rows so far in the outcome, as a single face's track does.
+      outcome->summary = trackVideoFaces(
+          video, *outcome->model, settings, multiFaceSettings(settings),
+          [&table = outcome->table](TrackRow&& row) { table.rows.push_back(std::move(row)); },
+          keepFits, progress, &cancel);
+    } else {
+      outcome->summary = trackVideo(video, *outcome->model, settings, outcome->table,
+                                    recordFits(outcome->fits, 0), progress, &cancel);
+      outcome->fits.resize(outcome->table.rows.size());  // unreadable frames at the end
+    }
     outcome->warning = unreadableFramesWarning(video, outcome->summary);
   };
 }
@@ -121,13 +144,25 @@ JobRunner::Job exportOverlayJob(std::filesystem::path video, std::filesystem::pa
     FitOverlayOptions options;
     options.patches = patches;
     const int total = reader.frameCount();
+    std::vector<std::vector<std::size_t>> rowsOf;  // per frame: its rows in `shown`
+    for (std::size_t r = 0; r < shown.size(); ++r) {
+      const int f = shown[r].frame;
+      if (f < 0) continue;
+      if (rowsOf.size() <= static_cast<std::size_t>(f))
+        rowsOf.resize(static_cast<std::size_t>(f) + 1);
+      rowsOf[static_cast<std::size_t>(f)].push_back(r);
+    }
     cv::Mat frame;
     while (reader.read(frame)) {
       cancel.throwIfCancelled();
       const auto index = static_cast<std::size_t>(reader.frameIndex());
-      if (index < shown.size() && shown[index].points.cols() > 0) {
-        const std::optional<FrameFit> fit = index < fits.size() ? fits[index] : std::nullopt;
-        drawReviewOverlay(frame, shown[index], fit, fitter, scheme, options, true);
+      options.label = true;  // once a frame
+      for (const std::size_t r :
+           index < rowsOf.size() ? rowsOf[index] : std::vector<std::size_t>{}) {
+        if (shown[r].points.cols() == 0) continue;
+        const std::optional<FrameFit> fit = r < fits.size() ? fits[r] : std::nullopt;
+        drawReviewOverlay(frame, shown[r], fit, fitter, scheme, options, true);
+        options.label = false;
       }
       writer.write(frame);
       if (total > 0) progress(std::min(1.0, (reader.frameIndex() + 1.0) / total), "exporting");

@@ -1,10 +1,13 @@
 // The page's long operations as JobRunner jobs, each working on copies of what it needs and
 // filling an outcome the page takes over on the GUI thread when the job has ended: tracking the
 // whole video (loading the model first if needed), re-tracking forward from a corrected frame, and
-// writing the overlay video. A cancelled track or re-track keeps the frames done so far.
+// writing the overlay video. A cancelled track or re-track keeps the frames done so far. Tracking
+// follows the settings' faces (TrackerSettings::faces) as `clm3d track --faces` does; a re-track
+// follows the one face it starts from.
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,8 +22,11 @@ namespace clm3d::ui {
 
 struct TrackOutcome {
   std::shared_ptr<const ClmModel> model;  // loaded by the job when none was given
+  // Face by face (settings.faces != 1): the rows of every face with a `face` column, as `clm3d
+  // track --faces` writes them, and the fits per face id indexed by frame.
   TrackTable table;
-  std::vector<std::optional<FrameFit>> fits;  // per frame of table.rows
+  std::vector<std::optional<FrameFit>> fits;  // one face: per frame of table.rows
+  std::map<int, std::vector<std::optional<FrameFit>>> faceFits;
   TrackSummary summary;
   std::string warning;  // unreadableFramesWarning: frames the video declares but could not give
 };
@@ -31,6 +37,7 @@ JobRunner::Job trackJob(std::filesystem::path video, std::filesystem::path model
                         std::shared_ptr<TrackOutcome> outcome);
 
 struct RetrackOutcome {
+  int face = 0;  // the face re-tracked (TrackSession::selectedFace when started)
   int corrected = 0;
   std::vector<TrackRow> rows;  // frames corrected+1 onwards
   std::vector<std::optional<FrameFit>> fits;
@@ -42,6 +49,7 @@ JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const Clm
                           std::shared_ptr<RetrackOutcome> outcome);
 
 struct LoopOutcome {
+  int face = 0;  // the face re-tracked (TrackSession::selectedFace when started)
   int corrected = 0;
   RetrackDirection direction = RetrackDirection::Forward;
   Eigen::Matrix2Xd points;                    // the corrected frame's points the job started from
@@ -58,8 +66,9 @@ JobRunner::Job loopRetrackJob(std::filesystem::path video, std::filesystem::path
                               std::vector<int> frames, std::vector<TrackRow> previous,
                               RetrackRules rules, std::shared_ptr<LoopOutcome> outcome);
 
-// Writes `out` (.mp4/.avi/.mkv) with every frame drawn by drawReviewOverlay: `shown` is the row to
-// draw per frame (the ground truth), `fits` the stored fit states.
+// Writes `out` (.mp4/.avi/.mkv) with every frame drawn by drawReviewOverlay: `shown` are the rows
+// to draw (the ground truth: one per frame, or one per face and frame when face by face; each row
+// on the frame it names), `fits` their stored fit states (parallel to `shown`).
 JobRunner::Job exportOverlayJob(std::filesystem::path video, std::filesystem::path out,
                                 std::shared_ptr<const ClmModel> model, std::vector<TrackRow> shown,
                                 std::vector<std::optional<FrameFit>> fits, bool patches);

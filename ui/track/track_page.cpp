@@ -23,6 +23,7 @@
 #include "core/project/autosave.hpp"
 #include "core/project/project.hpp"
 #include "core/project/project_layout.hpp"
+#include "core/review/face_truth.hpp"
 #include "core/review/review_overlay.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/coco_keypoints.hpp"
@@ -34,6 +35,7 @@
 #include "ui/common/mat_image.hpp"
 #include "ui/project/studio_settings.hpp"
 #include "ui/track/compared_points.hpp"
+#include "ui/track/face_overlays.hpp"
 #include "ui/track/frame_source.hpp"
 #include "ui/track/frame_view.hpp"
 #include "ui/track/landmark_marks.hpp"
@@ -143,6 +145,7 @@ void TrackPage::buildLayout() {
   auto* reviewLayout = new QVBoxLayout(review);
   reviewLayout->addWidget(infoLabel_);
   reviewLayout->addWidget(patchesCheck_);
+  buildFaceControls(reviewLayout);  // several faces: track_page_faces.cpp
 
   auto* truthBox = new QGroupBox(tr("Correction and ground truth"), this);
   auto* truthLayout = new QVBoxLayout(truthBox);
@@ -286,6 +289,7 @@ void TrackPage::setProject(Project* project) {
     tracksCsv_.clear();
     comparedCsv_.clear();
     current_ = 0;
+    refreshFaces();
     refreshTimeline();
     showFrame();
     updateControls();
@@ -372,9 +376,10 @@ bool TrackPage::openVideo(const fs::path& video) {
     offerRecovery();
   } else if (fs::exists(csv)) {
     runReportingErrors(this, tr("Opening the ground truth failed"),
-                       [&] { session_.setTruth(loadGroundTruth(csv)); });
+                       [&] { session_.loadTruth(csv); });
   }
-  openTracksOfVideo();  // the project's track of this video, without tracking again
+  openTracksOfVideo();
+  refreshFaces();  // the project's track of this video, without tracking again
   resetOverlayFitter();
   player_->setFps(session_.video().fps);
   fillProjectLists();
@@ -402,17 +407,34 @@ void TrackPage::offerRecovery() {
     discardAutosave(csv);
     if (fs::exists(csv)) {
       runReportingErrors(this, tr("Opening the ground truth failed"),
-                         [&] { session_.setTruth(loadGroundTruth(csv)); });
+                         [&] { session_.loadTruth(csv); });
     }
     return;
   }
   runReportingErrors(this, tr("Recovering the corrections failed"), [&] {
-    GroundTruthSet recovered = loadGroundTruth(autosavePathFor(csv));
-    recovered.padTo(session_.video().frameCount);
-    const GroundTruthSet before = session_.truth();
-    // An undo step, so the recovered work counts as unsaved until the user saves it.
-    undo_.push(new TruthSetCommand(tr("Recover autosaved corrections"), session_, before,
-                                   std::move(recovered), [this] { truthChanged(); }));
+    std::vector<FaceTruth> recovered = loadFaceGroundTruth(autosavePathFor(csv));
+    if (recovered.size() == 1 && recovered.front().face == 0 && !session_.multiFace()) {
+      GroundTruthSet truth = std::move(recovered.front().truth);
+      truth.padTo(session_.video().frameCount);
+      const GroundTruthSet before = session_.truth();
+      // An undo step, so the recovered work counts as unsaved until the user saves it.
+      undo_.push(new TruthSetCommand(tr("Recover autosaved corrections"), session_,
+                                     session_.selectedFace(), before, std::move(truth),
+                                     [this] { truthChanged(); }));
+      return;
+    }
+    // Several faces: each face's recovered set is an undo step from what it had (nothing when it
+    // is new), all of them one.
+    std::map<int, GroundTruthSet> before;
+    for (const TrackSession::Face& face : session_.faces()) before[face.id] = face.truth;
+    session_.setFaceTruth(std::move(recovered));
+    for (const TrackSession::Face& face : session_.faces()) {
+      if (!before.count(face.id)) {
+        before[face.id] = GroundTruthSet::fromTrack(TrackTable{face.truth.table.landmarkCount, {}},
+                                                    session_.video().frameCount);
+      }
+    }
+    pushReplacedTruths(tr("Recover autosaved corrections"), before);
   });
 }
 
@@ -462,6 +484,7 @@ bool TrackPage::retrackFromCurrentFrame() {
   }
   player_->setPlaying(false);
   retrackOutcome_ = std::make_shared<RetrackOutcome>();
+  retrackOutcome_->face = session_.selectedFace();
   job_ = Job::Retrack;
   runner_->start(tr("re-tracking"),
                  retrackJob(session_.video().path, session_.model(), trackerSettings_, current_,
@@ -477,13 +500,21 @@ bool TrackPage::exportOverlay(const fs::path& out) {
     showError(this, tr("Nothing to export"), tr("Track the video first."));
     return false;
   }
+  // Every face's ground truth (face by face, the rows with points), each row with its fit.
+  std::vector<TrackRow> shown;
   std::vector<std::optional<FrameFit>> fits;
-  for (int f = 0; f < session_.video().frameCount; ++f) fits.push_back(session_.fit(f));
+  for (const TrackSession::Face& face : session_.faces()) {
+    for (const TrackRow& row : face.truth.table.rows) {
+      if (session_.multiFace() && !session_.truthRow(face.id, row.frame)) continue;
+      shown.push_back(row);
+      const auto f = static_cast<std::size_t>(row.frame);
+      fits.push_back(f < face.fits.size() ? face.fits[f] : std::nullopt);
+    }
+  }
   exportPath_ = out;
   job_ = Job::Export;
-  runner_->start(tr("exporting"),
-                 exportOverlayJob(session_.video().path, out, session_.model(),
-                                  session_.truth().table.rows, std::move(fits), patches_));
+  runner_->start(tr("exporting"), exportOverlayJob(session_.video().path, out, session_.model(),
+                                                   std::move(shown), std::move(fits), patches_));
   updateControls();
   return true;
 }
@@ -496,12 +527,24 @@ void TrackPage::onJobEnded() {
       session_.setModel(modelPath_, trackOutcome_->model);
     }
     if (!trackOutcome_->table.rows.empty()) {
-      session_.setTrack(std::move(trackOutcome_->table), std::move(trackOutcome_->fits));
+      const bool several = !trackOutcome_->table.extraColumns.empty();  // a face column
+      QString message;
+      if (several) {
+        session_.setFaceTrack(trackOutcome_->table, trackOutcome_->faceFits);
+        message = tr("Tracked %1 of %2 frames face by face: %3 faces, %4 face-frames succeeded.")
+                      .arg(trackOutcome_->summary.frames)
+                      .arg(session_.video().frameCount)
+                      .arg(session_.faces().size())
+                      .arg(trackOutcome_->summary.succeeded);
+      } else {
+        session_.setTrack(std::move(trackOutcome_->table), std::move(trackOutcome_->fits));
+        message = tr("Tracked %1 of %2 frames (%3 succeeded).")
+                      .arg(session_.track().rows.size())
+                      .arg(session_.video().frameCount)
+                      .arg(trackOutcome_->summary.succeeded);
+      }
+      refreshFaces();
       saveTracks();
-      QString message = tr("Tracked %1 of %2 frames (%3 succeeded).")
-                            .arg(session_.track().rows.size())
-                            .arg(session_.video().frameCount)
-                            .arg(trackOutcome_->summary.succeeded);
       if (!trackOutcome_->warning.empty()) {
         message += tr(" Warning: %1").arg(QString::fromStdString(trackOutcome_->warning));
       }
@@ -510,14 +553,16 @@ void TrackPage::onJobEnded() {
     trackOutcome_.reset();
     resetOverlayFitter();
   } else if (job == Job::Retrack && retrackOutcome_) {
-    if (!retrackOutcome_->rows.empty()) {
+    if (!retrackOutcome_->rows.empty() && session_.selectFace(retrackOutcome_->face)) {
+      refreshFaces();  // the face it re-tracked is the one shown
       const GroundTruthSet before = session_.truth();
       const int corrected = retrackOutcome_->corrected;
       session_.replaceTrackAfter(corrected, std::move(retrackOutcome_->rows),
                                  std::move(retrackOutcome_->fits));
       // The rows already changed; the command makes the ground-truth part undoable.
-      undo_.push(new TruthSetCommand(tr("Re-track from frame %1").arg(corrected), session_, before,
-                                     session_.truth(), [this] { truthChanged(); }));
+      undo_.push(new TruthSetCommand(tr("Re-track from frame %1").arg(corrected), session_,
+                                     session_.selectedFace(), before, session_.truth(),
+                                     [this] { truthChanged(); }));
       saveTracks();
     }
     retrackOutcome_.reset();
@@ -540,7 +585,7 @@ void TrackPage::saveTracks() {
       project_layout::tracksFile(project_->folder, session_.video().path, modelPath_);
   runReportingErrors(this, tr("Saving the tracks failed"), [&] {
     fs::create_directories(path.parent_path());
-    writeTrackTable(path, session_.track());
+    writeTrackTable(path, session_.trackTable());  // with a face column when face by face
     tracksCsv_ = path;
     if (project_->addUnique(project_->tracks, path)) emit projectModified();
   });
@@ -552,7 +597,9 @@ bool TrackPage::save() {
   const fs::path csv = groundTruthCsv();
   const bool saved = runReportingErrors(this, tr("Saving the ground truth failed"), [&] {
     fs::create_directories(csv.parent_path());
-    saveGroundTruth(csv, session_.truth(), csv.parent_path());
+    // Face by face: one CSV with the face column (atomically, as clm3d track writes it).
+    session_.saveTruth(csv, csv.parent_path());
+    if (session_.multiFace()) return;
     // And as COCO keypoints beside it, for the tools that read those (docs/ground-truth.md).
     const Scheme* scheme = session_.scheme();
     if (!scheme || scheme->size() != session_.truth().table.landmarkCount) {
@@ -585,7 +632,7 @@ bool TrackPage::autosave() {
   if (undo_.isClean() || undo_.index() == autosavedIndex_ || !session_.hasVideo()) return false;
   const fs::path csv = groundTruthCsv();
   try {
-    saveGroundTruth(autosavePathFor(csv), session_.truth());
+    session_.saveTruth(autosavePathFor(csv), {});
     autosavedIndex_ = undo_.index();
     return true;
   } catch (const std::exception& error) {
@@ -618,7 +665,8 @@ int TrackPage::interpolateKeyframes() {
     return 0;
   }
   undo_.push(new TruthSetCommand(tr("Interpolate %1 frames").arg(filled), session_,
-                                 session_.truth(), std::move(after), [this] { truthChanged(); }));
+                                 session_.selectedFace(), session_.truth(), std::move(after),
+                                 [this] { truthChanged(); }));
   emit statusMessage(tr("Interpolated %1 frames between keyframes.").arg(filled));
   return filled;
 }
@@ -688,11 +736,16 @@ void TrackPage::showFrame() {
 
   std::vector<QColor> colours;
   Eigen::Matrix2Xd points;
+  // Face by face, every face in its own colour; one face in the scheme's region colours.
+  const QColor selectedColour = faceColour(session_.selectedFace());
+  showOtherFaces(selectedColour);
   if (shown) {
     points = shown->points;
     for (int i = 0; i < points.cols(); ++i) {
       QColor colour(80, 230, 80);
-      if (const Scheme* scheme = session_.scheme(); scheme && i < scheme->size()) {
+      if (session_.multiFace()) {
+        colour = selectedColour;
+      } else if (const Scheme* scheme = session_.scheme(); scheme && i < scheme->size()) {
         const int region = scheme->regionOf(i);
         if (region >= 0) {
           const RgbColour c = scheme->regions()[static_cast<std::size_t>(region)].colour;
@@ -753,7 +806,8 @@ void TrackPage::refreshTimeline() {
   TimelineData timeline;
   timeline.frameCount = session_.video().frameCount;
   for (const TrackRow& row : session_.track().rows) {
-    timeline.confidence.push_back(row.confidence);
+    // Face by face, the frames the selected face is not in show nothing (not failed).
+    timeline.confidence.push_back(session_.inFrame(row.frame) ? row.confidence : std::nan(""));
     timeline.success.push_back(row.success);
   }
   timeline.keyframe = session_.truth().keyframe;
@@ -780,6 +834,7 @@ void TrackPage::updateControls() {
   compareButton_->setEnabled(!busy && session_.hasVideo());
   exportButton_->setEnabled(!busy && tracked);
   trackFiles_->setActionsEnabled(!busy && session_.hasVideo());
+  faceCombo_->setEnabled(!editsBlocked());
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];
   keyframeButton_->setText(keyframe ? tr("Clear keyframe (K)") : tr("Mark keyframe (K)"));

@@ -2,12 +2,15 @@
 // review every frame (landmarks, the synthetic patches of thesis figure 5.5, view and confidence,
 // a timeline to scrub), correct landmarks by dragging (undoable), mark keyframes, interpolate
 // between them, re-track forward from a corrected frame, save the ground-truth set into the project
-// and export the overlay video. The page holds no computation: core does the tracking, drawing and
-// file formats; the widgets and the session live in the other files of ui/track.
+// and export the overlay video. A video tracked face by face (the tracker settings' "Faces to
+// track", a tracks CSV with a face column) shows every face in its colour and corrects the
+// selected one (track_page_faces.cpp). The page holds no computation: core does the tracking,
+// drawing and file formats; the widgets and the session live in the other files of ui/track.
 #pragma once
 
 #include <QUndoStack>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "core/review/track_session.hpp"
@@ -121,7 +124,23 @@ class TrackPage : public Page {
   int loopRetracks() const { return loopRetracks_; }
   ReviewPanel* reviewPanel() { return review_; }
 
+  // --- Several faces (track_page_faces.cpp) -----------------------------------------------------
+  // The face drags, keyframes, interpolation and re-tracks correct, the timeline and the review
+  // list show; the others are drawn in their colours. Also a click near a face on the frame or the
+  // Face list. False when no face has that id or a job other than a loop re-track runs.
+  bool selectFace(int face);
+  QComboBox* faceCombo() { return faceCombo_; }
+
  private:
+  void buildFaceControls(QBoxLayout* box);
+  void refreshFaces();  // the Face list from the session
+  // The frame view's other faces and the selected face's label (none for one face).
+  void showOtherFaces(const QColor& selectedColour);
+  // A load or recovery that replaced faces' ground truths: one undo step per face that was there
+  // before (`before`: id -> its set then), grouped as one.
+  void pushReplacedTruths(const QString& text, const std::map<int, GroundTruthSet>& before);
+  // --- end of several faces ---------------------------------------------------------------------
+
   enum class Job { None, Track, Retrack, Export, Loop };
   // The settings button (in `top`), the review panel (in `side`), the loop's shortcuts.
   void buildLoopControls(QBoxLayout* top, QBoxLayout* side);
@@ -197,11 +216,14 @@ class TrackPage : public Page {
   QTimer* loopTimer_ = nullptr;
   std::shared_ptr<LoopOutcome> loopOutcome_;
   int pendingLoopFrame_ = -1;
+  int pendingLoopFace_ = 0;
   int loopRetracks_ = 0;
   std::vector<ReviewItem> reviewList_;
   int reviewRank_ = -1;  // the rank N / Shift+N last went to
   TrackFilesPanel* trackFiles_ = nullptr;
   std::filesystem::path comparedCsv_;
+  QComboBox* faceCombo_ = nullptr;
+  QLabel* faceLabel_ = nullptr;
 };
 
 }  // namespace clm3d::ui

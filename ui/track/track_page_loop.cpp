@@ -148,8 +148,12 @@ bool TrackPage::editsBlocked() const {
 void TrackPage::correctionMade(int frame) {
   if (!loopEnabled()) return;
   pendingLoopFrame_ = frame;
+  pendingLoopFace_ = session_.selectedFace();
   // A re-track from this frame's earlier points is out of date: stop it (its rows are dropped).
-  if (job_ == Job::Loop && loopOutcome_ && loopOutcome_->corrected == frame) runner_->cancel();
+  if (job_ == Job::Loop && loopOutcome_ && loopOutcome_->corrected == frame &&
+      loopOutcome_->face == pendingLoopFace_) {
+    runner_->cancel();
+  }
   loopTimer_->start();
 }
 
@@ -157,6 +161,8 @@ void TrackPage::startPendingLoop() {
   if (pendingLoopFrame_ < 0 || isBusy()) return;  // onJobEnded comes back here
   const int frame = pendingLoopFrame_;
   pendingLoopFrame_ = -1;
+  // The face dragged, even if another was selected since: a loop re-track follows its drag.
+  if (session_.selectedFace() != pendingLoopFace_ && !selectFace(pendingLoopFace_)) return;
   retrackSpanFrom(frame, RetrackDirection::Forward);
 }
 
@@ -176,6 +182,7 @@ bool TrackPage::retrackSpanFrom(int frame, RetrackDirection direction) {
   }
   player_->setPlaying(false);
   loopOutcome_ = std::make_shared<LoopOutcome>();
+  loopOutcome_->face = session_.selectedFace();  // re-tracks this face only
   loopOutcome_->corrected = frame;
   loopOutcome_->direction = direction;
   loopOutcome_->points = session_.truth().table.rows[static_cast<std::size_t>(frame)].points;
@@ -196,16 +203,16 @@ void TrackPage::takeLoopOutcome() {
     resetOverlayFitter();
   }
   const int corrected = outcome->corrected;
-  if (!session_.hasPoints(corrected) ||
-      !samePoints(session_.truth().table.rows[static_cast<std::size_t>(corrected)].points,
-                  outcome->points)) {
+  const int face = outcome->face;  // whichever face is selected now
+  const TrackRow* correctedRow = session_.truthRow(face, corrected);
+  if (correctedRow == nullptr || !samePoints(correctedRow->points, outcome->points)) {
     emit statusMessage(
         tr("Frame %1 changed while re-tracking; that re-track was dropped.").arg(corrected));
     return;
   }
   // The span as it is now: a keyframe marked meanwhile ends it.
   const std::vector<int> span =
-      retrackFrames(session_.truth().keyframe, corrected, outcome->direction);
+      retrackFrames(session_.truth(face).keyframe, corrected, outcome->direction);
   std::vector<TrackRow> rows;
   std::vector<std::optional<FrameFit>> fits;
   for (std::size_t i = 0; i < outcome->retrack.rows.size() && i < span.size(); ++i) {
@@ -220,14 +227,16 @@ void TrackPage::takeLoopOutcome() {
   }
   const bool wholeTrack =
       static_cast<int>(session_.track().rows.size()) >= session_.video().frameCount;
-  const GroundTruthSet before = session_.truth();
+  const GroundTruthSet before = session_.truth(face);
   const int first = rows.front().frame;
   const int last = rows.back().frame;
   const auto count = static_cast<int>(rows.size());
-  session_.replaceTrackFrames(std::move(rows), std::move(fits));
+  // That face's rows only: the other faces' tracks and ground truths stay as they are.
+  session_.replaceTrackFrames(face, std::move(rows), std::move(fits));
   ++loopRetracks_;
-  undo_.push(new FollowUpCommand(tr("Re-track frames %1-%2").arg(first).arg(last), session_,
-                                 corrected, before, session_.truth(), [this] { truthChanged(); }));
+  undo_.push(new FollowUpCommand(tr("Re-track frames %1-%2").arg(first).arg(last), session_, face,
+                                 corrected, before, session_.truth(face),
+                                 [this] { truthChanged(); }));
   // Only a track of every frame is written back (a partial one would replace a whole file).
   if (wholeTrack) saveTracks();
   QString why;
@@ -256,8 +265,12 @@ void TrackPage::refreshReviewList() {
   if (!scheme) return;  // no eye points to measure jumps by
   ReviewListSettings settings;
   settings.lowConfidence = review_->lowConfidence();
-  reviewList_ =
-      rankFramesForReview(truth.table, truth.keyframe, scheme->normalisationPair(), settings);
+  // Face by face, the frames the face is not in are left out as keyframes are (nothing to fix).
+  std::vector<bool> leftOut = truth.keyframe;
+  for (int f = 0; f < static_cast<int>(leftOut.size()); ++f) {
+    if (!session_.inFrame(f)) leftOut[static_cast<std::size_t>(f)] = true;
+  }
+  reviewList_ = rankFramesForReview(truth.table, leftOut, scheme->normalisationPair(), settings);
 }
 
 bool TrackPage::goToNextToReview(int step) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/common/error.hpp"
+#include "core/eval/face_pairing.hpp"
 #include "core/model/model_file.hpp"
 #include "core/project/project.hpp"
 #include "core/project/project_layout.hpp"
@@ -77,19 +78,25 @@ bool TrackPage::loadTrack(const fs::path& csv) {
     }
     track.extraColumns.clear();
     for (TrackRow& row : track.rows) row.extraCells.clear();
+    if (hasFaceColumn(table)) track = table;  // face by face (clm3d track --faces)
   });
   if (!read) return false;
   player_->setPlaying(false);
   loadModelForReview();
-  const GroundTruthSet before = session_.truth();
+  std::map<int, GroundTruthSet> before;
+  for (const TrackSession::Face& face : session_.faces()) before[face.id] = face.truth;
   const bool history = undo_.count() > 0;
-  session_.setTrack(std::move(track), {});
+  if (hasFaceColumn(track)) {
+    session_.setFaceTrack(track, {});
+  } else {
+    session_.setTrack(std::move(track), {});
+  }
+  refreshFaces();
   tracksCsv_ = csv;
   // With corrections in the history the load is an undo step, so undoing them stays consistent.
   if (history) {
-    undo_.push(new TruthSetCommand(
-        tr("Load track %1").arg(QString::fromStdString(csv.filename().string())), session_, before,
-        session_.truth(), [this] { truthChanged(); }));
+    pushReplacedTruths(tr("Load track %1").arg(QString::fromStdString(csv.filename().string())),
+                       before);
   }
   refreshTrackFiles();
   refreshTimeline();

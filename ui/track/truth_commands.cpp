@@ -4,18 +4,21 @@
 
 namespace clm3d::ui {
 
-TruthRowCommand::TruthRowCommand(const QString& text, TrackSession& session, int frame,
+TruthRowCommand::TruthRowCommand(const QString& text, TrackSession& session, int face, int frame,
                                  RowState before, RowState after, TruthChanged changed)
     : QUndoCommand(text),
       session_(session),
+      face_(face),
       frame_(frame),
       before_(std::move(before)),
       after_(std::move(after)),
       changed_(std::move(changed)) {}
 
 void TruthRowCommand::apply(const RowState& state) {
-  GroundTruthSet& truth = session_.truth();
+  if (!session_.hasFace(face_)) return;
+  GroundTruthSet& truth = session_.truth(face_);
   const auto i = static_cast<std::size_t>(frame_);
+  if (i >= truth.table.rows.size()) return;
   truth.table.rows[i] = state.row;
   truth.keyframe[i] = state.keyframe;
   session_.updateErrors();
@@ -23,14 +26,14 @@ void TruthRowCommand::apply(const RowState& state) {
 }
 
 void TruthRowCommand::undo() {
-  if (followUp_) session_.truth() = followUp_->first;
+  if (followUp_ && session_.hasFace(face_)) session_.truth(face_) = followUp_->first;
   apply(before_);
 }
 
 void TruthRowCommand::redo() {
   apply(after_);
-  if (followUp_) {
-    session_.truth() = followUp_->second;
+  if (followUp_ && session_.hasFace(face_)) {
+    session_.truth(face_) = followUp_->second;
     session_.updateErrors();
     if (changed_) changed_();
   }
@@ -38,7 +41,8 @@ void TruthRowCommand::redo() {
 
 bool TruthRowCommand::mergeWith(const QUndoCommand* other) {
   const auto* followUp = dynamic_cast<const FollowUpCommand*>(other);
-  if (!takesFollowUp_ || followUp_ || followUp == nullptr || followUp->frame() != frame_) {
+  if (!takesFollowUp_ || followUp_ || followUp == nullptr || followUp->frame() != frame_ ||
+      followUp->face() != face_) {
     return false;
   }
   followUp_.emplace(followUp->before(), followUp->after());
@@ -74,9 +78,14 @@ TruthRowCommand* moveLandmarkCommand(TrackSession& session, int frame, int index
   const TruthRowCommand::RowState before = currentState(session, frame);
   Eigen::Matrix2Xd points = before.row.points;
   points.col(index) = to;
-  auto* command = new TruthRowCommand(
-      QObject::tr("Move landmark %1 on frame %2").arg(index + 1).arg(frame), session, frame, before,
-      keyframeState(session, frame, points), std::move(changed));
+  const QString text = session.multiFace()
+                           ? QObject::tr("Move landmark %1 of face %2 on frame %3")
+                                 .arg(index + 1)
+                                 .arg(session.selectedFace())
+                                 .arg(frame)
+                           : QObject::tr("Move landmark %1 on frame %2").arg(index + 1).arg(frame);
+  auto* command = new TruthRowCommand(text, session, session.selectedFace(), frame, before,
+                                      keyframeState(session, frame, points), std::move(changed));
   command->setTakesFollowUp(true);
   return command;
 }
@@ -92,27 +101,32 @@ TruthRowCommand* toggleKeyframeCommand(TrackSession& session, int frame, TruthCh
     after = keyframeState(session, frame, before.row.points);
     text = QObject::tr("Mark keyframe %1").arg(frame);
   }
-  return new TruthRowCommand(text, session, frame, before, after, std::move(changed));
+  return new TruthRowCommand(text, session, session.selectedFace(), frame, before, after,
+                             std::move(changed));
 }
 
-TruthSetCommand::TruthSetCommand(const QString& text, TrackSession& session, GroundTruthSet before,
-                                 GroundTruthSet after, TruthChanged changed)
+TruthSetCommand::TruthSetCommand(const QString& text, TrackSession& session, int face,
+                                 GroundTruthSet before, GroundTruthSet after, TruthChanged changed)
     : QUndoCommand(text),
       session_(session),
+      face_(face),
       before_(std::move(before)),
       after_(std::move(after)),
       changed_(std::move(changed)) {}
 
-void TruthSetCommand::undo() {
-  session_.truth() = before_;
+void TruthSetCommand::apply(const GroundTruthSet& set) {
+  if (!session_.hasFace(face_)) return;
+  session_.truth(face_) = set;
   session_.updateErrors();
   if (changed_) changed_();
 }
 
+void TruthSetCommand::undo() {
+  apply(before_);
+}
+
 void TruthSetCommand::redo() {
-  session_.truth() = after_;
-  session_.updateErrors();
-  if (changed_) changed_();
+  apply(after_);
 }
 
 }  // namespace clm3d::ui

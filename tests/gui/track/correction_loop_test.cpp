@@ -13,6 +13,7 @@
 #include <QProcessEnvironment>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 #include <cmath>
 #include <thread>
@@ -181,6 +182,21 @@ class CorrectionLoopTest : public QObject {
     QCOMPARE(changedTrackerOptions(form.settings()), changedTrackerOptions(settings));
     form.setSettings(TrackerSettings{});
     QVERIFY(changedTrackerOptions(form.settings()).empty());
+    // Faces to track (--faces): 1, a count, or all, the spin box's word below 1.
+    auto* faces = form.findChild<QSpinBox*>(QStringLiteral("faces"));
+    QVERIFY(faces);
+    QCOMPARE(faces->value(), 1);
+    for (const int count : {0, 3}) {
+      TrackerSettings many;
+      many.faces = count;
+      form.setSettings(many);
+      QCOMPARE(form.settings().faces, count);
+    }
+    form.setSettings(TrackerSettings{});
+    faces->setValue(0);
+    QCOMPARE(faces->text(), QStringLiteral("all"));
+    QCOMPARE(changedTrackerOptions(form.settings()).at("faces"), std::string("all"));
+    form.setSettings(TrackerSettings{});
   }
 
   void settingsChangedInTheDialogAreRememberedInTheProject() {

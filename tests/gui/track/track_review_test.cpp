@@ -1,8 +1,11 @@
 // The Track page reviewing what exists (issue 13, item 2): a project's track of a video opens with
 // the video, without tracking; any tracks or ground-truth CSV loads as the track; two tracks are
 // compared (the compared points drawn over the frame, their per-frame difference on the timeline);
-// a broken tracks CSV shows the error dialog naming the file and the problem and loses nothing.
+// a broken tracks CSV shows the error dialog naming the file and the problem and loses nothing;
+// a two-face track (a face column, as `clm3d track --faces` writes) shows both faces, and a drag
+// of one face corrects and re-tracks that face only, undone in one step (issue 27 item 3).
 #include <QApplication>
+#include <QComboBox>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -16,11 +19,15 @@
 #include "core/project/project.hpp"
 #include "core/project/project_layout.hpp"
 #include "core/track/track_table.hpp"
+#include "core/video/video_writer.hpp"
 #include "tests/gui/support/gui_test_support.hpp"
 #include "tests/gui/track/track_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
+#include "tests/support/two_faces.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/track/compared_points.hpp"
+#include "ui/track/face_overlays.hpp"
+#include "ui/track/frame_view.hpp"
 #include "ui/track/timeline_widget.hpp"
 #include "ui/track/track_files_panel.hpp"
 #include "ui/track/track_page.hpp"
@@ -44,6 +51,12 @@ TrackTable shifted(TrackTable table, double dx) {
   return table;
 }
 
+// Equal, NaN where the other is NaN.
+bool samePoints(const Eigen::Matrix2Xd& a, const Eigen::Matrix2Xd& b) {
+  return a.cols() == b.cols() &&
+         (a.array() == b.array() || (a.array().isNaN() && b.array().isNaN())).all();
+}
+
 // Eq. 5.1 for a uniform shift: the shift over the truth's eye-centre distance (points 8 and 11).
 double expectedDifference(const TrackRow& truth) {
   return kShiftPixels / (truth.points.col(7) - truth.points.col(10)).norm();
@@ -61,6 +74,24 @@ class TrackReviewTest : public QObject {
   fs::path shiftedTrack_;
   TrackTable truth_;
   std::unique_ptr<TrackPage> page_;
+
+  static constexpr int kTwoFrames = 6;
+  fs::path twoVideo_;
+  std::vector<test::TwoFaceFrame> twoFrames_;
+
+  // Two procedural heads in one video (tests/support/two_faces.hpp), made once.
+  const fs::path& twoFaceVideo() {
+    if (!twoVideo_.empty()) return twoVideo_;
+    twoVideo_ = project_.folder / "videos" / "two" / "two.avi";
+    test::runOffGuiThread([&] {
+      twoFrames_ = test::twoFaceFrames(kTwoFrames, 10);
+      fs::create_directories(twoVideo_.parent_path());
+      VideoWriter writer(twoVideo_, 640, 520, 25.0);
+      for (const auto& frame : twoFrames_) writer.write(frame.image);
+      writer.close();
+    });
+    return twoVideo_;
+  }
 
   void openPage() {
     page_ = std::make_unique<TrackPage>();
@@ -209,6 +240,149 @@ class TrackReviewTest : public QObject {
     QVERIFY(page_->session().truth().keyframe[2]);
     QCOMPARE(page_->undoStack()->count(), undoSteps + 1);
     page_->undoStack()->setClean();
+  }
+
+  // Two procedural heads in one video (tests/support/two_faces.hpp) and their truth as a two-face
+  // track: face 0 the top head, face 1 the bottom one.
+  void twoFacesAreDrawnAndCorrectedFaceByFace() {
+    const fs::path& video = twoFaceVideo();
+    const std::vector<test::TwoFaceFrame>& frames = twoFrames_;
+    const fs::path csv = temp_.path() / "two-faces.csv";
+    TrackTable faces;
+    faces.landmarkCount = static_cast<int>(frames[0].top.cols());
+    faces.extraColumns = {"face"};
+    for (int f = 0; f < kTwoFrames; ++f) {
+      for (int face = 0; face < 2; ++face) {
+        TrackRow row;
+        row.frame = f;
+        row.timestamp = f / 25.0;
+        row.success = true;
+        row.confidence = 0.9;
+        row.points = face == 0 ? frames[static_cast<std::size_t>(f)].top
+                               : frames[static_cast<std::size_t>(f)].bottom;
+        row.extraCells = {std::to_string(face)};
+        faces.rows.push_back(std::move(row));
+      }
+    }
+    writeTrackTable(csv, faces);
+
+    if (!page_) {  // run on its own
+      openPage();
+      page_->setProject(&project_);
+    }
+    QVERIFY(page_->openVideo(video));
+    QVERIFY(page_->loadTrack(csv));
+    const TrackSession& session = page_->session();
+    QVERIFY(session.multiFace());
+    QCOMPARE(session.faces().size(), std::size_t{2});
+    QCOMPARE(session.selectedFace(), 0);
+    QVERIFY(page_->faceCombo()->isVisible());
+
+    // Both faces drawn, each in its colour: the selected one as the landmarks, the other beside.
+    page_->setCurrentFrame(2);
+    FrameView* view = page_->frameView();
+    QCOMPARE(view->otherFaces().size(), std::size_t{1});
+    QCOMPARE(view->otherFaces()[0].face, 1);
+    const QImage drawn = view->grab().toImage();
+    const auto colourAt = [&](const Eigen::Vector2d& point) {
+      return drawn.pixelColor(view->toWidget({point.x(), point.y()}).toPoint());
+    };
+    const auto near = [](const QColor& a, const QColor& b) {
+      return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) +
+                 std::abs(a.blue() - b.blue()) <
+             60;
+    };
+    const int nose = 11;  // point 12, the tip of the nose: no other point on it
+    QVERIFY2(near(colourAt(frames[2].top.col(nose)), faceColour(0)),
+             qPrintable(colourAt(frames[2].top.col(nose)).name()));
+    QVERIFY2(near(colourAt(frames[2].bottom.col(nose)), faceColour(1)),
+             qPrintable(colourAt(frames[2].bottom.col(nose)).name()));
+
+    // A click inside the bottom face selects it.
+    const Eigen::Vector2d centre = frames[2].bottom.rowwise().mean();
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->toWidget({centre.x(), centre.y()}).toPoint());
+    QCOMPARE(session.selectedFace(), 1);
+    QCOMPARE(view->otherFaces()[0].face, 0);
+
+    // Drag face 1's nose 8 pixels; the loop re-tracks face 1 from frame 2 on.
+    const TrackTable face0Track = session.faces()[0].track;
+    const GroundTruthSet face0Truth = session.truth(0);
+    const GroundTruthSet face1Truth = session.truth(1);
+    const int steps = page_->undoStack()->count();
+    const int retracks = page_->loopRetracks();
+    page_->setLoopEnabled(true);
+    const Eigen::Vector2d from = face1Truth.table.rows[2].points.col(nose);
+    const QPoint press = view->toWidget({from.x(), from.y()}).toPoint();
+    const QPoint release = view->toWidget({from.x() + 8.0, from.y()}).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, {}, press);
+    QTest::mouseMove(view, release);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, release);
+    QVERIFY(test::waitUntil([&] { return !page_->loopPending() && !page_->isBusy(); }, 60000));
+    QCOMPARE(page_->loopRetracks(), retracks + 1);
+    QCOMPARE(page_->undoStack()->count(), steps + 1);  // the drag and its re-track: one step
+    const GroundTruthSet& corrected = session.truth(1);
+    QVERIFY(corrected.keyframe[2]);
+    QVERIFY((corrected.table.rows[2].points.col(nose) - from).norm() > 4.0);
+    // Face 0's track and truth are untouched.
+    for (int f = 0; f < kTwoFrames; ++f) {
+      const auto i = static_cast<std::size_t>(f);
+      QVERIFY(samePoints(session.faces()[0].track.rows[i].points, face0Track.rows[i].points));
+      QVERIFY(samePoints(session.truth(0).table.rows[i].points, face0Truth.table.rows[i].points));
+      QCOMPARE(session.truth(0).keyframe[i], face0Truth.keyframe[i]);
+    }
+
+    // Saving writes both faces with the face column, face 0 as it was.
+    QVERIFY(page_->save());
+    const TrackTable saved = readTrackTable(page_->groundTruthCsv());
+    QCOMPARE(saved.rows.size(), std::size_t{2 * kTwoFrames});
+    QCOMPARE(saved.extraColumns, (std::vector<std::string>{"face", "keyframe"}));
+    for (const TrackRow& row : saved.rows) {
+      if (row.extraCells[0] == "0") {
+        QVERIFY(samePoints(row.points,
+                           face0Truth.table.rows[static_cast<std::size_t>(row.frame)].points));
+      }
+    }
+
+    // One Ctrl+Z takes back the drag and the re-track of face 1.
+    page_->undoStack()->undo();
+    for (int f = 0; f < kTwoFrames; ++f) {
+      const auto i = static_cast<std::size_t>(f);
+      QVERIFY(samePoints(session.truth(1).table.rows[i].points, face1Truth.table.rows[i].points));
+      QCOMPARE(session.truth(1).keyframe[i], face1Truth.keyframe[i]);
+      QVERIFY(samePoints(session.truth(0).table.rows[i].points, face0Truth.table.rows[i].points));
+    }
+    page_->undoStack()->setClean();
+  }
+
+  // Faces to track = all (the settings' --faces) tracks the two heads with trackVideoFaces, as
+  // `clm3d track --faces all` does: two faces, each on its head, the tracks CSV with the face
+  // column.
+  void trackingEveryFaceFromTheSettingsGivesEachFaceItsTrack() {
+    if (!page_) {
+      openPage();
+      page_->setProject(&project_);
+    }
+    QVERIFY(page_->openVideo(twoFaceVideo()));
+    TrackerSettings settings = page_->trackerSettings();
+    settings.faces = 0;  // all
+    page_->setTrackerSettings(settings);
+    QCOMPARE(project_.trackerOptions.at("faces"), std::string("all"));
+    QVERIFY(page_->startTracking());
+    QVERIFY(test::waitUntil([&] { return !page_->isBusy(); }, 60000));
+    const TrackSession& session = page_->session();
+    QVERIFY(session.multiFace());
+    QCOMPARE(session.faces().size(), std::size_t{2});
+    for (const TrackSession::Face& face : session.faces()) {
+      const TrackRow& first = face.track.rows[0];
+      QVERIFY(first.success);
+      const double top = test::meanPointError(first.points, twoFrames_[0].top);
+      const double bottom = test::meanPointError(first.points, twoFrames_[0].bottom);
+      QVERIFY2(std::min(top, bottom) < 6.0, qPrintable(QString("%1 %2").arg(top).arg(bottom)));
+    }
+    const TrackTable saved = readTrackTable(page_->tracksCsv());
+    QCOMPARE(saved.extraColumns, std::vector<std::string>{"face"});
+    QCOMPARE(saved.rows.size(), std::size_t{2 * kTwoFrames});
+    page_->setTrackerSettings(TrackerSettings{});
   }
 
   void cleanupTestCase() { page_.reset(); }

@@ -2,7 +2,8 @@
 // naming a file that is not one), a track becoming the ground truth, keyframes surviving a new
 // track, a re-track after a corrected frame and of scattered frames (padding a cancelled run), a
 // model of another scheme resetting the corrections, and the per-frame error of eq. 5.1 against
-// the keyframes or a loaded reference.
+// the keyframes or a loaded reference; a track of several faces (a face column) split by face,
+// each face corrected and re-tracked on its own, and saved and loaded back with the face column.
 #include "core/review/track_session.hpp"
 
 #include <gtest/gtest.h>
@@ -272,6 +273,85 @@ TEST_F(TrackSessionTest, ASetGroundTruthIsPaddedToTheVideo) {
   EXPECT_EQ(session.truth().frameCount(), kFrames);
   EXPECT_TRUE(session.truth().keyframe[1]);
   EXPECT_NEAR(session.errors()[1], 0.1, 1e-9);
+}
+
+// Two faces, 0 on every frame and 1 (shifted 200 px) from frame 2 on, as `clm3d track --faces`
+// writes them: rows by frame, then face.
+TrackTable twoFaces() {
+  TrackTable table;
+  table.landmarkCount = 5;
+  table.extraColumns = {"face"};
+  for (int f = 0; f < kFrames; ++f) {
+    for (int face = 0; face < 2; ++face) {
+      if (face == 1 && f < 2) continue;
+      TrackRow r = row(f, 200.0 * face);
+      r.extraCells = {std::to_string(face)};
+      table.rows.push_back(std::move(r));
+    }
+  }
+  return table;
+}
+
+TEST_F(TrackSessionTest, SeveralFacesAreSplitByFaceAndTheSelectedOneIsCorrected) {
+  session.setFaceTrack(twoFaces(), {{1, fits(kFrames)}});
+  ASSERT_TRUE(session.multiFace());
+  ASSERT_EQ(session.faces().size(), 2u);
+  EXPECT_EQ(session.selectedFace(), 0);
+  EXPECT_EQ(session.track().rows.size(), static_cast<std::size_t>(kFrames));
+  EXPECT_EQ(session.truthRow(1, 1), nullptr);  // face 1 is not in frame 1
+  ASSERT_NE(session.truthRow(1, 3), nullptr);
+  EXPECT_NEAR(session.truthRow(1, 3)->points(0, 0), 300.0, 1e-12);
+  EXPECT_FALSE(session.fit(3).has_value());  // face 0 has no fits
+  ASSERT_TRUE(session.selectFace(1));
+  EXPECT_FALSE(session.selectFace(7));
+  EXPECT_TRUE(session.fit(3).has_value());
+  EXPECT_FALSE(session.hasPoints(1));
+  EXPECT_TRUE(session.hasPoints(2));
+  EXPECT_FALSE(session.inFrame(1));  // the timeline and the review list leave it out
+  EXPECT_TRUE(session.inFrame(2));
+
+  // A correction and a re-track of face 1 change face 1's rows only.
+  session.truth().setKeyframe(4, row(4, 210.0).points);
+  session.replaceTrackFrames(1, {row(5, 205.0), row(6, 205.0)}, {});
+  EXPECT_NEAR(session.truth(1).table.rows[5].points(0, 0), 305.0, 1e-12);
+  for (int f = 0; f < kFrames; ++f) {
+    EXPECT_NEAR(session.truth(0).table.rows[static_cast<std::size_t>(f)].points(0, 0), 100.0,
+                1e-12);
+    EXPECT_FALSE(session.truth(0).keyframe[static_cast<std::size_t>(f)]);
+  }
+
+  // The track and the ground truth are written with the face column, by frame then face, and the
+  // ground truth reads back face by face with its keyframe.
+  const TrackTable written = session.trackTable();
+  ASSERT_EQ(written.extraColumns, std::vector<std::string>{"face"});
+  EXPECT_EQ(written.rows.size(), twoFaces().rows.size());
+  EXPECT_EQ(written.rows[4].frame, 3);
+  EXPECT_EQ(written.rows[4].extraCells[0], "0");
+  EXPECT_EQ(written.rows[5].extraCells[0], "1");
+  const auto csv = dir / "faces-truth.csv";
+  session.saveTruth(csv, dir / "pts");
+  EXPECT_FALSE(std::filesystem::exists(dir / "pts"));  // one .pts a frame holds one face
+  TrackSession reopened;
+  reopened.openVideo(session.video().path);
+  reopened.loadTruth(csv);
+  ASSERT_TRUE(reopened.multiFace());
+  ASSERT_EQ(reopened.faces().size(), 2u);
+  EXPECT_TRUE(reopened.truth(1).keyframe[4]);
+  EXPECT_EQ(reopened.truthRow(1, 0), nullptr);
+  EXPECT_NEAR(reopened.truth(1).table.rows[6].points(0, 0), 305.0, 1e-12);
+  EXPECT_EQ(readTrackTable(csv).rows.size(), twoFaces().rows.size());
+}
+
+TEST_F(TrackSessionTest, AFaceCellThatIsNotAnIdIsAnErrorNamingTheFile) {
+  TrackTable table = twoFaces();
+  table.rows[3].extraCells = {"left"};
+  try {
+    splitFaceTruth(table, kFrames, "faces.csv");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("faces.csv"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("left"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

@@ -101,5 +101,26 @@ TEST(TrackerOptions, BadValuesNameTheSourceTheOptionAndWhatIsValid) {
   EXPECT_TRUE(errorOf({{"scales", "3"}, {"detector", "dlib"}}).empty());
 }
 
+// --faces (issue 27 item 3): 1, a count, or "all" (0, written as the word), as the command line
+// and the studio's form take it; 0 and other words are refused naming what is valid.
+TEST(TrackerOptions, FacesIsACountOrAll) {
+  const TrackerOption* faces = findTrackerOption("faces");
+  ASSERT_NE(faces, nullptr);
+  EXPECT_TRUE(faces->commands.has(OptionCommand::Track));
+  EXPECT_FALSE(faces->commands.has(OptionCommand::Batch));
+  EXPECT_EQ(faces->defaultText(), "1");
+  EXPECT_EQ(trackerSettingsFrom({{"faces", "all"}}, "cli").faces, 0);
+  EXPECT_EQ(trackerSettingsFrom({{"faces", "3"}}, "cli").faces, 3);
+  TrackerSettings every;
+  every.faces = 0;
+  EXPECT_EQ(faces->get(every), "all");
+  EXPECT_EQ(changedTrackerOptions(every).at("faces"), "all");
+  for (const std::string bad : {"0", "some", "-2", "3x"}) {
+    const std::string message = errorOf({{"faces", bad}});
+    EXPECT_NE(message.find("--faces"), std::string::npos) << message;
+    EXPECT_NE(message.find("1..50 or all"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace clm3d
