@@ -8,7 +8,9 @@
 # Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
 # PEER_DLIB (the peer_dlib binary of ../shared/tools/peer-dlib; built into OUT when absent),
 # SCORE (../shared/tools/score_68.py), SEQUENCES (20), FRAMES (120), PAIRS (5),
-# TURNED (5).
+# TURNED (5), TRAIN_OPTIONS and TRACK_OPTIONS (extra options of clm3d train and of every
+# clm3d track, e.g. "--calibrate-views" and "--view-search-probability 0.9" for the A/B of
+# docs/fitting.md#views-on-one-scale; use a fresh OUT for each).
 # The model trained here inherits LFPW's research-only terms: it is written to OUT, never committed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,7 +29,7 @@ mkdir -p "$OUT"/{starts,fits,peer,sequences,tracks,logs}
 MODEL=$OUT/real.clm3d
 if [[ ! -f $MODEL ]]; then
   /usr/bin/time -f "train: %e s wall, %M KB peak" "$CLM3D" train --dataset resources/datasets/real.json \
-    --out "$MODEL" --texture-max-modes 16 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
+    --out "$MODEL" --texture-max-modes 16 ${TRAIN_OPTIONS:-} 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
 fi
 
 # 2. Starts from the truth: the 5-point start (eye centres, nose tip, mouth corners).
@@ -104,7 +106,7 @@ track_sequence() {  # STEM IMAGE SEED [synth options]
     "$CLM3D" synth --photo "$img" --landmarks "${img%.jpg}.pts" --frames "$FRAMES" --seed "$seed" \
       "$@" --out "$seq" > /dev/null 2>&1
   [[ -f $OUT/tracks/$stem.csv ]] ||
-    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
+    "$CLM3D" track --model "$MODEL" ${TRACK_OPTIONS:-} --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
       > "$OUT/logs/track-$stem.log" 2>&1
 }
 n=0
@@ -151,7 +153,7 @@ for ((p = 0; p + 1 < ${#pair_images[@]}; p += 2)); do
       --beside-landmarks "${right%.jpg}.pts" --frames "$FRAMES" --seed $((100 + p)) \
       --out "$seq" > /dev/null 2>&1
   [[ -f $OUT/tracks/$stem.csv ]] ||
-    "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --faces all --out "$OUT/tracks/$stem.csv" \
+    "$CLM3D" track --model "$MODEL" ${TRACK_OPTIONS:-} --video "$seq"/*.avi --faces all --out "$OUT/tracks/$stem.csv" \
       --quiet > "$OUT/logs/track-$stem.log" 2>&1
   pair_truths+=("$seq/truth.csv"); pair_preds+=("$OUT/tracks/$stem.csv")
   echo "$stem: $(grep -o "[0-9]* detections" "$OUT/logs/track-$stem.log" || echo "? detections")"
@@ -178,7 +180,7 @@ if [[ -f $ICT && $TURNED -gt 0 ]]; then
         --dense-model "$ICT" --dense-vertices tests/fixtures/ict-facekit/thesis25_vertices.json \
         --out "$seq" > "$OUT/logs/synth-$stem.log" 2>&1
     [[ -f $OUT/tracks/$stem.csv ]] ||
-      "$CLM3D" track --model "$MODEL" --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
+      "$CLM3D" track --model "$MODEL" ${TRACK_OPTIONS:-} --video "$seq"/*.avi --out "$OUT/tracks/$stem.csv" --quiet \
         > "$OUT/logs/track-$stem.log" 2>&1
     turned_truths+=("$seq/truth.csv"); turned_preds+=("$OUT/tracks/$stem.csv")
     echo "$stem: $(grep -o "[0-9]* detections" "$OUT/logs/track-$stem.log" || echo "? detections")"
@@ -192,7 +194,7 @@ fi
 FRANCK=$DATA/videos/franck.mp4
 if [[ -f $FRANCK ]]; then
   [[ -f $OUT/tracks/franck.csv ]] ||
-    "$CLM3D" track --model "$MODEL" --video "$FRANCK" --out "$OUT/tracks/franck.csv" --quiet \
+    "$CLM3D" track --model "$MODEL" ${TRACK_OPTIONS:-} --video "$FRANCK" --out "$OUT/tracks/franck.csv" --quiet \
       > "$OUT/logs/track-franck.log" 2>&1 || true
   mkdir -p "$OUT/franck"
   [[ -d $OUT/franck/frames ]] ||

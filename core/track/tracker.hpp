@@ -108,11 +108,10 @@ struct TrackerSettings {
   // (FitResult::viewProbability) is below it is also searched from the neighbouring views, and the
   // most probable kept, in `clm3d track` and `clm3d fit` alike (searchNeighbouringViews). The
   // calibration puts a side view's score and a frontal one's on one scale, which the raw responses
-  // are not. 0, the default, switches it off: with the LFPW-trained model calibrated on held-out
-  // LFPW faces (ROC areas 0.6-0.8 off the frontal views) the search at 0.9 moved fits on 5 LFPW
-  // photos turned -80..80 degrees into wrong, pitched views that it accepted at 0.6-0.8, and the
-  // error over the face box at |yaw| 0-30 went from 0.035 to 0.123
-  // (docs/fitting.md#views-on-one-scale).
+  // are not. 0, the default, switches it off: with the real-faces model trained with
+  // --calibrate-views (side views' ROC areas 0.64-0.78), the search at 0.9 took the error over the
+  // face box on 5 LFPW photos turned -80..80 degrees from 0.035 to 0.045 at |yaw| 0-30 and from
+  // 0.058 to 0.068 at 30-60 (docs/fitting.md#views-on-one-scale).
   double viewSearchProbability = 0.0;
   double viewSearchMargin = 0.02;  // on any of the scales
   // Temporal smoothing of the written points (off by default). Only the rows' points are

@@ -110,6 +110,12 @@ std::vector<TrainOption> buildOptions() {
       spec("refiner-starts", "Refiner starts", experts,
            "perturbed starts per photo (and per mirrored photo) the refiner learns from", 1, 50),
       [](S& s) -> int& { return s.refinerStarts; }));
+  o.push_back(flagOption<S>(
+      spec("calibrate-views", "Calibrate the views", experts,
+           "with photos: calibrate each view's search confidence into the probability that a fit "
+           "is right, on photos the experts did not learn from (for --view-search-probability; "
+           "minutes more on the real-faces dataset)"),
+      [](S& s) -> bool& { return s.calibrateViews; }));
 
   const std::string pca = "Variance kept";
   o.push_back(realOption<S>(

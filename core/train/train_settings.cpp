@@ -96,6 +96,7 @@ std::string TrainSettings::toJson() const {
   }
   j["photo_jitter"] = photoJitter;
   j["refiner"] = {{"stages", refinerStages}, {"starts", refinerStarts}};
+  if (calibrateViews) j["calibrate_views"] = true;  // absent when off, as before format 7
   j["render_size"] = renderSize();
   j["greyscale"] = true;
   if (augmentation.any()) {  // absent when off, so models trained without it are unchanged

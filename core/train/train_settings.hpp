@@ -67,6 +67,11 @@ struct TrainSettings {
   // (0.0451 -> 0.0447), for 28 s more training on 705 photos (docs/real-faces.md).
   int refinerStages = 5;
   int refinerStarts = 20;
+  // Calibrate each view's search confidence on held-out photos (core/train/view_calibration.hpp;
+  // ViewModel::calibration), for `--view-search-probability`. Off by default: it added 145 s to a
+  // 370 s training from the real-faces dataset, and the search it serves made fits on turned LFPW
+  // photos worse (docs/fitting.md#views-on-one-scale).
+  bool calibrateViews = false;
   int supersample = 2;  // renderer anti-aliasing
   // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
   // the manifest unless augmentationFromManifest is false (clm3d train --no-augmentation).

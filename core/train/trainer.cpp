@@ -62,7 +62,7 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
                                        &placements, photoProgress, cancel);
   }
   // With photos, the last 10% is the point refiner's and the views' calibration.
-  const double textureEnd = input.photos.empty() ? 1.0 : 0.9;
+  const double textureEnd = input.photos.empty() ? 1.0 : settings.calibrateViews ? 0.9 : 0.95;
   const auto textureProgress = [&](double fraction, std::string_view stage) {
     if (progress) progress(0.02 + photoShare + (textureEnd - 0.02 - photoShare) * fraction, stage);
   };
@@ -76,6 +76,8 @@ ClmModel trainModel(const TrainingInput& input, const TrainSettings& settings,
                                    input.shapeOnly, photoSamples);
   if (!input.photos.empty()) {
     model.refiner = trainPhotoRefiner(input.photos, scheme, settings, refinerProgress, cancel);
+  }
+  if (!input.photos.empty() && settings.calibrateViews) {
     ViewCalibrationSettings calibration;
     calibration.seed = settings.seed;
     calibration.threads = settings.threads;
