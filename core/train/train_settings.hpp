@@ -68,9 +68,9 @@ struct TrainSettings {
   int refinerStages = 5;
   int refinerStarts = 20;
   // Calibrate each view's search confidence on held-out photos (core/train/view_calibration.hpp;
-  // ViewModel::calibration), for `--view-search-probability`. Off by default: it added 145 s to a
-  // 370 s training from the real-faces dataset, and the search it serves made fits on turned LFPW
-  // photos worse (docs/fitting.md#views-on-one-scale).
+  // ViewModel::calibration), for `--view-search-probability`. Off by default, as that search is:
+  // it made fits on turned LFPW photos worse (docs/fitting.md#views-on-one-scale). Cheap: 8 s
+  // more of a 207 s training from the real-faces dataset.
   bool calibrateViews = false;
   int supersample = 2;  // renderer anti-aliasing
   // Appearance augmentation of the renders (docs/training.md); trainFromManifest takes it from
