@@ -117,6 +117,7 @@ std::array<int, 2> neighbouringViews(const ClmModel& model, int view) {
 
 FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                                   const FitResult& fit, double margin, const FitFinisher& finish,
+                                  const std::function<bool(const FitResult&)>& accepted,
                                   int* searches) {
   FitResult best = fit;
   bool bestIsLast = true;
@@ -127,19 +128,30 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
     // Half-way to the neighbour's centre: inside its cell, and a step the search can make up.
     start.pose.yaw =
         0.5 * (fit.state.pose.yaw + radians(model.views[static_cast<std::size_t>(view)].yawDeg));
-    FitResult turned = fitter.fit(image, start, view);
-    if (finish) finish(turned);
     ++count;
-    bestIsLast = viewComparableScore(turned) > viewComparableScore(best) + margin;
-    if (bestIsLast) best = std::move(turned);
+    std::optional<FitResult> turned;
+    try {
+      turned = fitter.fit(image, start, view);
+      if (finish) finish(*turned);
+    } catch (const InputError&) {
+      // The turned start put the face outside the image: this neighbour is no candidate.
+    }
+    bestIsLast = turned && (!accepted || accepted(*turned)) &&
+                 viewComparableScore(*turned) > viewComparableScore(best) + margin;
+    if (bestIsLast) best = std::move(*turned);
   }
   if (!bestIsLast) {
     // The fitter keeps the last search's templates (the overlay draws them): search once more from
     // the kept result, and keep that unless it is worse.
-    FitResult again = fitter.fit(image, best.state, best.view);
-    if (finish) finish(again);
     ++count;
-    if (viewComparableScore(again) >= viewComparableScore(best)) best = std::move(again);
+    try {
+      FitResult again = fitter.fit(image, best.state, best.view);
+      if (finish) finish(again);
+      if ((!accepted || accepted(again)) && viewComparableScore(again) >= viewComparableScore(best))
+        best = std::move(again);
+    } catch (const InputError&) {
+      // The kept fit stands; only the overlay's templates are another search's.
+    }
   }
   if (searches != nullptr) *searches += count;
   return best;
@@ -185,8 +197,8 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
   }
   if (best && search.viewsBelow > 0.0 && std::isfinite(best->viewProbability) &&
       best->viewProbability < search.viewsBelow) {
-    FitResult turned =
-        searchNeighbouringViews(fitter, model, image, *best, search.viewMargin, search.finish);
+    FitResult turned = searchNeighbouringViews(fitter, model, image, *best, search.viewMargin,
+                                               search.finish, search.accepted);
     bestIsLast = true;  // searchNeighbouringViews leaves the fitter on the fit it returns
     best = std::move(turned);
   }

@@ -56,13 +56,17 @@ std::array<int, 2> neighbouringViews(const ClmModel& model, int view);
 
 // A fit searched again from the views next to its own in yaw (neighbouringViews): from its state
 // turned half-way to each neighbour's centre, in that view, each finished with `finish`. Returns
-// the fit whose viewComparableScore is highest, `fit` itself unless another beats it by `margin`.
+// the fit whose viewComparableScore is highest, `fit` itself unless another beats it by `margin`
+// and is `accepted` (when given; the tracker's judgement). A turned start that leaves the image
+// is no candidate.
 // A head turning past its view's range is caught by the next view (issue 26); the calibration is
 // what makes a side view's score comparable with a frontal one's. `searches`, when given, has the
 // searches made added.
 FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                                   const FitResult& fit, double margin,
-                                  const FitFinisher& finish = {}, int* searches = nullptr);
+                                  const FitFinisher& finish = {},
+                                  const std::function<bool(const FitResult&)>& accepted = {},
+                                  int* searches = nullptr);
 
 // A detected image's search over its faces: fitFromBestStart from stateFromBox of each face in
 // `faces` order (best first), `placed` applied to each start when given, until `accepted` says

@@ -198,13 +198,10 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
     if (step.fit && wantsViewSearch(*step.fit)) {
       const auto begin = std::chrono::steady_clock::now();
-      try {
-        step.fit = searchNeighbouringViews(fitter_, *model_, frame, *step.fit,
-                                           settings_.viewSearchMargin, finish);
-        step.failure = judge(*step.fit);
-      } catch (const InputError&) {
-        // A turned start put the face outside the image: the frame stands as it was searched.
-      }
+      const auto passes = [this](const FitResult& fit) { return judge(fit) == TrackFailure::None; };
+      step.fit = searchNeighbouringViews(fitter_, *model_, frame, *step.fit,
+                                         settings_.viewSearchMargin, finish, passes);
+      step.failure = judge(*step.fit);
       searchMs +=
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
               .count();
