@@ -172,6 +172,11 @@ void ClmModel::validate() const {
         !(std::isfinite(view.calibration->slope) && std::isfinite(view.calibration->offset))) {
       fail(field + ".calibration", "not finite");
     }
+    try {
+      view.check.validate(n);
+    } catch (const Error& e) {
+      fail(field + ".check", e.what());
+    }
     if (view.scales.empty()) fail(field + ".scales", "no scales");
     for (std::size_t s = 0; s < view.scales.size(); ++s) {
       validatePatchModel(view.scales[s], view, n, field + ".scales[" + std::to_string(s) + "]");

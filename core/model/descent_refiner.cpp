@@ -40,14 +40,17 @@ void DescentRefiner::validate(int schemeSize) const {
     if ((stage.shapeWeights.size() > 0) != hasShapeWeights())
       fail(where + ": shape weights in some stages and not in others");
   }
-  if (!check.empty()) {
-    if (!(check.window > 0.0 && check.window <= 4.0)) fail("check.window must be in (0, 4]");
-    if (check.featureMean.size() != d || check.weights.size() != d)
-      fail("check: array sizes do not match " + std::to_string(n) + " landmarks");
-    if (!check.featureMean.allFinite() || !check.weights.allFinite() ||
-        !std::isfinite(check.bias) || !std::isfinite(check.slope) || !std::isfinite(check.offset))
-      fail("check: values not finite");
-  }
+  if (!check.empty()) check.validate(n);
+}
+
+void DescentCheck::validate(Eigen::Index points) const {
+  const Eigen::Index d = points * kDescentFeaturesPerPoint;
+  if (!(window > 0.0 && window <= 4.0)) throw Error("check.window must be in (0, 4]");
+  if (featureMean.size() != d || weights.size() != d)
+    throw Error("check: array sizes do not match " + std::to_string(points) + " landmarks");
+  if (!featureMean.allFinite() || !weights.allFinite() || !std::isfinite(bias) ||
+      !std::isfinite(slope) || !std::isfinite(offset))
+    throw Error("check: values not finite");
 }
 
 }  // namespace clm3d

@@ -35,6 +35,9 @@ struct DescentCheck {
   double slope = 1.0, offset = 0.0;
 
   bool empty() const { return weights.size() == 0; }
+  // Throws Error naming the first inconsistency for a check of `points` points (sizes, window,
+  // non-finite values).
+  void validate(Eigen::Index points) const;
 };
 
 struct DescentRefiner {

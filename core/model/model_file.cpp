@@ -172,6 +172,15 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
     if (view.calibration)
       entry["calibration"] = {view.calibration->slope, view.calibration->offset};
     if (!view.refined) entry["refined"] = false;
+    // Version 8, on stored views only (a mirrored view holds its source's check unchanged).
+    if (!view.check.empty() && mirrorOf[v] < 0) {
+      const DescentCheck& check = view.check.classifier;
+      entry["check"] = {{"landmarks", view.check.landmarks},
+                        {"window", check.window},
+                        {"bias", check.bias},
+                        {"slope", check.slope},
+                        {"offset", check.offset}};
+    }
     views.push_back(std::move(entry));
   }
   return {{"scheme", model.schemeJson},
@@ -245,6 +254,7 @@ void addValues(std::uint64_t& total, std::uint64_t a, std::uint64_t b, const std
 // payload), no values yet. `mirrorOf` gets, per view, the stored view it mirrors (-1: stored).
 ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::uint32_t version,
                       std::vector<int>& mirrorOf) {
+  std::vector<ViewCheck> checks;  // per view, version 8: sized here, set with the view below
   ClmModel model;
   JsonFields header(headerValue, "", "header");
   model.schemeJson = header.requiredString("scheme", true);
@@ -320,6 +330,7 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
   }
   header.rejectUnknown();
   mirrorOf.assign(views.size(), -1);
+  checks.assign(views.size(), ViewCheck{});
   std::vector<JsonFields> viewFields;
   std::vector<std::vector<JsonFields>> scaleFields(views.size());
   for (std::size_t v = 0; v < views.size(); ++v) {
@@ -336,6 +347,28 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
         mirrorOf[v] = static_cast<int>(source);
         continue;  // no arrays: rebuilt from the source view
       }
+    }
+    if (version >= 8 && view.has("check")) {
+      JsonFields check = view.object("check");
+      ViewCheck& out = checks[v];
+      for (const Header& landmark :
+           array(check, "landmarks", static_cast<std::size_t>(kMaxPoints))) {
+        if (!landmark.is_number_integer() || landmark < 0 || landmark >= kMaxPoints) {
+          fieldError(check.name("landmarks"), "entries must be landmark indices");
+        }
+        out.landmarks.push_back(landmark.get<int>());
+      }
+      DescentCheck& classifier = out.classifier;
+      classifier.window = number(check, "window");
+      classifier.bias = number(check, "bias");
+      classifier.slope = number(check, "slope");
+      classifier.offset = number(check, "offset");
+      check.rejectUnknown();
+      const auto k = static_cast<std::uint64_t>(out.landmarks.size());
+      addValues(doubles, 2 * k, 1, check.path());
+      addValues(floats, k * kDescentFeaturesPerPoint, 2, check.path());
+      classifier.weights.resize(
+          1);  // marks the check present; sized once the byte count is checked
     }
     for (std::size_t s = 0; s < scales.size(); ++s) {
       JsonFields& scale = scaleFields[v].emplace_back(
@@ -392,6 +425,7 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       }
       view.visible.push_back(flag == 1);
     }
+    view.check = std::move(checks[v]);
     if (mirrorOf[v] >= 0) {  // filled in after the stored views are read
       model.views.push_back(std::move(view));
       continue;
@@ -509,6 +543,16 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
       readArray(reader, model.refiner.check.featureMean);
       readArray(reader, model.refiner.check.weights);
     }
+  }
+  for (ViewModel& view : model.views) {  // version 8: the views' checks, after the refiner
+    if (view.check.empty()) continue;
+    const auto k = static_cast<Eigen::Index>(view.check.landmarks.size());
+    view.check.meanShape.resize(2, k);
+    view.check.classifier.featureMean.resize(k * kDescentFeaturesPerPoint);
+    view.check.classifier.weights.resize(k * kDescentFeaturesPerPoint);
+    readArray(reader, view.check.meanShape);
+    readArray(reader, view.check.classifier.featureMean);
+    readArray(reader, view.check.classifier.weights);
   }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
     const Scheme scheme = model.scheme();
@@ -628,6 +672,13 @@ std::string serializeModel(const ClmModel& model) {
       appendFloats(payload, model.refiner.check.featureMean);
       appendFloats(payload, model.refiner.check.weights);
     }
+  }
+  for (std::size_t v = 0; v < model.views.size(); ++v) {
+    const ViewCheck& check = model.views[v].check;
+    if (mirrorOf[v] >= 0 || check.empty()) continue;
+    appendFloats(payload, check.meanShape);
+    appendFloats(payload, check.classifier.featureMean);
+    appendFloats(payload, check.classifier.weights);
   }
   std::string file(kMagic);
   appendLittleEndian(file, kModelFormatVersion);

@@ -121,6 +121,7 @@ ViewModel mirrorView(const ViewModel& source, const Scheme& scheme) {
   mirrored.mirrored = !source.mirrored;
   mirrored.calibration = source.calibration;
   mirrored.refined = source.refined;
+  mirrored.check = source.check;  // read through a flip into the non-mirrored view's frame
   mirrored.visible.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     mirrored.visible[static_cast<std::size_t>(i)] =

@@ -12,6 +12,7 @@
 #include "core/common/logistic_curve.hpp"
 #include "core/model/patch_expert.hpp"
 #include "core/model/pca.hpp"
+#include "core/model/view_check.hpp"
 #include "core/scheme/scheme.hpp"
 
 namespace clm3d {
@@ -48,6 +49,9 @@ struct ViewModel {
   // view): where it did not (profiles, for a refiner learnt from near-frontal photos), a fit's
   // points are left as the search gives them and it is judged on the view's calibration.
   bool refined = true;
+  // The view's own check of a search's points (format 8; empty before, and where training had too
+  // few faces in the view): core/model/view_check.hpp.
+  ViewCheck check;
 };
 
 // Zero mean, unit variance (population) in place; a constant (or empty) patch becomes zeros.

@@ -29,8 +29,53 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
   const DescentCheck& check = refiner.check;
   if (check.empty() || !points.allFinite()) return std::numeric_limits<double>::quiet_NaN();
   const Eigen::VectorXf features = featuresAt(refiner, regionGrey, points, check.window);
+  return checkProbability(check, features);
+}
+
+double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features) {
   const double score = check.weights.dot(features - check.featureMean) + check.bias;
   return LogisticCurve{check.slope, check.offset}(score);
+}
+
+DescentCheck learnLinearCheck(const Eigen::MatrixXf& features,
+                              const std::vector<unsigned char>& right,
+                              const std::vector<int>& learn, const std::vector<int>& calibrate,
+                              double ridge, double window,
+                              const LogisticFitSettings& curveSettings) {
+  const auto hasBoth = [&](const std::vector<int>& samples) {
+    int count = 0;
+    for (int s : samples) count += right[static_cast<std::size_t>(s)] != 0;
+    return count > 0 && count < static_cast<int>(samples.size());
+  };
+  if (!hasBoth(learn) || !hasBoth(calibrate))
+    throw InputError("check: the labelled samples were all right or all wrong");
+  const Eigen::Index d = features.rows();
+  DescentCheck check;
+  check.window = window;
+  Eigen::MatrixXf learnFeatures(d, static_cast<Eigen::Index>(learn.size()));
+  Eigen::MatrixXf targets(1, static_cast<Eigen::Index>(learn.size()));
+  for (std::size_t i = 0; i < learn.size(); ++i) {
+    learnFeatures.col(static_cast<Eigen::Index>(i)) = features.col(learn[i]);
+    targets(0, static_cast<Eigen::Index>(i)) =
+        right[static_cast<std::size_t>(learn[i])] ? 1.f : -1.f;
+  }
+  check.featureMean = learnFeatures.rowwise().mean();
+  learnFeatures.colwise() -= check.featureMean;
+  const float meanTarget = targets.mean();
+  targets.array() -= meanTarget;
+  check.weights = ridgeRegression(learnFeatures, targets, ridge).row(0).transpose();
+  check.bias = meanTarget;
+
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int s : calibrate) {
+    scores.push_back(check.weights.dot(features.col(s) - check.featureMean) + check.bias);
+    labels.push_back(right[static_cast<std::size_t>(s)] != 0);
+  }
+  const LogisticCurve curve = fitLogisticCurve(scores, labels, curveSettings);
+  check.slope = curve.slope;
+  check.offset = curve.offset;
+  return check;
 }
 
 DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
@@ -73,40 +118,7 @@ DescentCheck trainDescentCheck(const std::vector<DescentPhoto>& photos,
   const auto calibrates = [&](int s) { return (s / perPhoto / 2) % every == every - 1; };
   std::vector<int> learn, calibrate;
   for (int s = 0; s < m; ++s) (calibrates(s) ? calibrate : learn).push_back(s);
-  const auto hasBoth = [&](const std::vector<int>& samples) {
-    int count = 0;
-    for (int s : samples) count += right[static_cast<std::size_t>(s)];
-    return count > 0 && count < static_cast<int>(samples.size());
-  };
-  if (!hasBoth(learn) || !hasBoth(calibrate))
-    throw InputError("refiner check: the refined starts were all right or all wrong");
-
-  DescentCheck check;
-  check.window = settings.window;
-  Eigen::MatrixXf learnFeatures(d, static_cast<Eigen::Index>(learn.size()));
-  Eigen::MatrixXf targets(1, static_cast<Eigen::Index>(learn.size()));
-  for (std::size_t i = 0; i < learn.size(); ++i) {
-    learnFeatures.col(static_cast<Eigen::Index>(i)) = features.col(learn[i]);
-    targets(0, static_cast<Eigen::Index>(i)) =
-        right[static_cast<std::size_t>(learn[i])] ? 1.f : -1.f;
-  }
-  check.featureMean = learnFeatures.rowwise().mean();
-  learnFeatures.colwise() -= check.featureMean;
-  const float meanTarget = targets.mean();
-  targets.array() -= meanTarget;
-  check.weights = ridgeRegression(learnFeatures, targets, settings.ridge).row(0).transpose();
-  check.bias = meanTarget;
-
-  std::vector<double> scores;
-  std::vector<bool> labels;
-  for (int s : calibrate) {
-    scores.push_back(check.weights.dot(features.col(s) - check.featureMean) + check.bias);
-    labels.push_back(right[static_cast<std::size_t>(s)] != 0);
-  }
-  const LogisticCurve curve = fitLogisticCurve(scores, labels);
-  check.slope = curve.slope;
-  check.offset = curve.offset;
-  return check;
+  return learnLinearCheck(features, right, learn, calibrate, settings.ridge, settings.window);
 }
 
 }  // namespace clm3d

@@ -14,6 +14,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "core/common/logistic_curve.hpp"
 #include "core/common/progress.hpp"
 #include "core/model/descent_refiner.hpp"
 #include "core/refine/descent_refinement.hpp"
@@ -25,6 +26,19 @@ namespace clm3d {
 // refineInRegion gives them) are right; NaN when the refiner has no check.
 double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                      const Eigen::Matrix2Xd& points);
+
+// The probability `check` gives to `features` (as descentFeatures gives them).
+double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features);
+
+// A check from labelled features (features x samples, `right` per sample): the ridge regression of
+// +-1 labels on the `learn` samples, its score turned into a probability by a logistic curve
+// fitted on the `calibrate` samples. The refiner's check and the views' checks
+// (core/refine/view_check.hpp) are learnt by it. InputError when either list lacks a class.
+DescentCheck learnLinearCheck(const Eigen::MatrixXf& features,
+                              const std::vector<unsigned char>& right,
+                              const std::vector<int>& learn, const std::vector<int>& calibrate,
+                              double ridge, double window,
+                              const LogisticFitSettings& curveSettings = {});
 
 struct DescentCheckSettings {
   double window = 0.6;  // feature window, eye distances of the mean shape

@@ -2,10 +2,15 @@
 
 #include <cmath>
 
+#include "core/refine/view_check.hpp"
+
 namespace clm3d {
 
 void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
                const RefinerStarts& starts) {
+  // The view's own check reads the search's points, before they are refined.
+  const double checked = viewCheckProbability(model, fit.view, image, fit.points);
+  if (std::isfinite(checked)) fit.viewProbability = checked;
   const DescentRefiner& refiner = model.refiner;
   if (refiner.empty()) return;
   if (fit.view >= 0 && !model.views[static_cast<std::size_t>(fit.view)].refined) {

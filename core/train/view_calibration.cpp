@@ -19,6 +19,8 @@
 #include "core/fit/fitter.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/geometry/face_box.hpp"
+#include "core/refine/descent_check.hpp"
+#include "core/refine/view_check.hpp"
 
 namespace clm3d {
 namespace {
@@ -36,6 +38,7 @@ struct Search {
   int view = -1;
   double score = 0.0;
   bool right = false;
+  Eigen::VectorXf features;  // what the view's check reads (empty: none)
 };
 
 // `count` of `list`, spread evenly over it (the first when count >= its size: all).
@@ -50,8 +53,9 @@ std::vector<int> spread(const std::vector<int>& list, int count) {
 }
 
 // The searches of one face: from near its truth, moved away, turned a view away.
-std::vector<Search> searchFace(const ClmModel& model, const TrainingPhoto& photo,
-                               const ViewCalibrationSettings& settings, std::uint64_t key) {
+std::vector<Search> searchFace(const ClmModel& model, const std::vector<ViewCheck>& layouts,
+                               const TrainingPhoto& photo, const ViewCalibrationSettings& settings,
+                               std::uint64_t key) {
   const cv::Mat image = cv::imread(photo.image.string(), cv::IMREAD_GRAYSCALE);
   const int n = model.shape.pointCount();
   if (image.empty() || photo.points.size() != n) return {};
@@ -124,10 +128,81 @@ std::vector<Search> searchFace(const ClmModel& model, const TrainingPhoto& photo
       ++counted;
     }
     if (counted == 0 || !std::isfinite(error)) continue;
-    searches.push_back({pooledView(model, result.view), result.confidence,
-                        error / counted / box < settings.rightBelow});
+    const int pooled = pooledView(model, result.view);
+    searches.push_back(
+        {pooled, result.confidence, error / counted / box < settings.rightBelow,
+         viewCheckFeatures(model, result.view, layouts[static_cast<std::size_t>(pooled)], image,
+                           result.points)});
   }
   return searches;
+}
+
+// The ROC's area of labelled scores (ties count half; 0.5 without both labels).
+double separation(const std::vector<double>& s, const std::vector<bool>& right) {
+  double pairs = 0.0, above = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!right[i]) continue;
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      if (right[j]) continue;
+      pairs += 1.0;
+      above += s[i] > s[j] ? 1.0 : (s[i] == s[j] ? 0.5 : 0.0);
+    }
+  }
+  return pairs > 0.0 ? above / pairs : 0.5;
+}
+
+// The check of view `view` from its searches (`found`, per job; every checkCalibrationEvery-th
+// job's searches fit the curve and measure the check, the others teach it), or an empty one when
+// a class has too few searches. Fills the row's held-out ROC areas.
+ViewCheck learnViewCheck(const ViewCheck& layout, int view,
+                         const std::vector<std::vector<Search>>& found,
+                         const ViewCalibrationSettings& settings, ViewCalibrationRow& row) {
+  const int every = std::max(2, settings.checkCalibrationEvery);
+  std::vector<const Search*> samples;
+  std::vector<int> learn, calibrate;
+  for (std::size_t j = 0; j < found.size(); ++j) {
+    for (const Search& search : found[j]) {
+      if (search.view != view || search.features.size() == 0) continue;
+      (static_cast<int>(j) % every == every - 1 ? calibrate : learn)
+          .push_back(static_cast<int>(samples.size()));
+      samples.push_back(&search);
+    }
+  }
+  const auto counts = [&](const std::vector<int>& list) {
+    int right = 0;
+    for (const int s : list) right += samples[static_cast<std::size_t>(s)]->right ? 1 : 0;
+    return std::pair{right, static_cast<int>(list.size()) - right};
+  };
+  const auto [learnRight, learnWrong] = counts(learn);
+  const auto [heldRight, heldWrong] = counts(calibrate);
+  if (std::min(learnRight, learnWrong) < settings.minCheckPerClass ||
+      std::min(heldRight, heldWrong) < settings.minCheckPerClass / 4) {
+    return {};
+  }
+  Eigen::MatrixXf features(samples.front()->features.size(),
+                           static_cast<Eigen::Index>(samples.size()));
+  std::vector<unsigned char> right(samples.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    features.col(static_cast<Eigen::Index>(s)) = samples[s]->features;
+    right[s] = samples[s]->right ? 1 : 0;
+  }
+  ViewCheck check = layout;
+  LogisticFitSettings curve;
+  curve.balanced = true;
+  check.classifier = learnLinearCheck(features, right, learn, calibrate, settings.checkRidge,
+                                      layout.classifier.window, curve);
+  std::vector<double> checkScores, responses;
+  std::vector<bool> labels;
+  for (const int s : calibrate) {
+    const Search& search = *samples[static_cast<std::size_t>(s)];
+    checkScores.push_back(checkProbability(check.classifier, search.features));
+    responses.push_back(search.score);
+    labels.push_back(search.right);
+  }
+  row.checkSeparation = separation(checkScores, labels);
+  row.heldOutResponseSeparation = separation(responses, labels);
+  row.checked = static_cast<int>(calibrate.size());
+  return check;
 }
 
 }  // namespace
@@ -177,13 +252,19 @@ std::vector<ViewCalibrationRow> calibrateViews(ClmModel& model,
     }
   }
 
+  // The layout of each view's check (landmarks, mean shape), on the non-mirrored views.
+  std::vector<ViewCheck> layouts(static_cast<std::size_t>(viewCount));
+  for (int v = 0; v < viewCount; ++v) {
+    if (pooledView(model, v) == v) layouts[static_cast<std::size_t>(v)] = viewCheckLayout(model, v);
+  }
+
   std::vector<std::vector<Search>> found(jobs.size());
   std::atomic<int> done{0};
   parallelFor(static_cast<int>(jobs.size()), settings.threads, [&](int j) {
     if (cancel) cancel->throwIfCancelled();
     const auto [k, key] = jobs[static_cast<std::size_t>(j)];
     found[static_cast<std::size_t>(j)] =
-        searchFace(model, photos[static_cast<std::size_t>(k)], settings, key);
+        searchFace(model, layouts, photos[static_cast<std::size_t>(k)], settings, key);
     const int finished = ++done;
     if (progress)
       progress(static_cast<double>(finished) / static_cast<double>(jobs.size()), "calibration");
@@ -208,19 +289,6 @@ std::vector<ViewCalibrationRow> calibrateViews(ClmModel& model,
            static_cast<int>(list.size()) - right >= settings.minPerClass;
   };
   if (!enough(allLabels)) return {};
-  // The ROC's area of a view's searches (ties count half).
-  const auto separation = [](const std::vector<double>& s, const std::vector<bool>& right) {
-    double pairs = 0.0, above = 0.0;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      if (!right[i]) continue;
-      for (std::size_t j = 0; j < s.size(); ++j) {
-        if (right[j]) continue;
-        pairs += 1.0;
-        above += s[i] > s[j] ? 1.0 : (s[i] == s[j] ? 0.5 : 0.0);
-      }
-    }
-    return pairs > 0.0 ? above / pairs : 0.5;
-  };
   LogisticFitSettings fitting;
   fitting.balanced = true;
   for (int v = 0; v < viewCount; ++v) {
@@ -246,10 +314,18 @@ std::vector<ViewCalibrationRow> calibrateViews(ClmModel& model,
     row.curve = enough(sameYawLabels) ? fitLogisticCurve(sameYawScores, sameYawLabels, fitting)
                                       : fitLogisticCurve(allScores, allLabels, fitting);
   }
+  std::vector<ViewCheck> checks(static_cast<std::size_t>(viewCount));
   for (int v = 0; v < viewCount; ++v) {
     const auto slot = static_cast<std::size_t>(v);
-    const ViewCalibrationRow& source = rows[static_cast<std::size_t>(pooledView(model, v))];
+    if (pooledView(model, v) == v)
+      checks[slot] = learnViewCheck(layouts[slot], v, found, settings, rows[slot]);
+  }
+  for (int v = 0; v < viewCount; ++v) {
+    const auto slot = static_cast<std::size_t>(v);
+    const auto sourceSlot = static_cast<std::size_t>(pooledView(model, v));
+    const ViewCalibrationRow& source = rows[sourceSlot];
     model.views[slot].calibration = source.curve;
+    model.views[slot].check = checks[sourceSlot];
     if (!model.refiner.empty()) {
       model.views[slot].refined = source.refinerFaces >= settings.refinerShare * refinerCopies;
     }
@@ -267,7 +343,7 @@ std::string formatViewCalibration(const ClmModel& model,
   out << "view calibration (searches from near the truth, moved and turned starts; right: error "
          "under 0.08 of the face box; ROC area: how well the response tells them apart):\n"
       << "  pitch   yaw  faces (held out)  right  wrong  ROC area  p(0.4)  p(0.5)  p(0.6)  "
-         "refiner\n";
+         "refiner  check: searches  ROC area (response's)\n";
   out << std::fixed;
   for (const ViewCalibrationRow& row : rows) {
     const ViewModel& view = model.views[static_cast<std::size_t>(row.view)];
@@ -276,7 +352,14 @@ std::string formatViewCalibration(const ClmModel& model,
         << " (" << std::setw(3) << row.heldOut << ")    " << std::setw(5) << row.right
         << std::setw(7) << row.wrong << std::setprecision(2) << std::setw(10) << row.separation;
     for (const double score : {0.4, 0.5, 0.6}) out << std::setw(8) << row.curve(score);
-    out << "  " << (view.refined ? "yes" : "no") << (row.pooled ? "  (curve pooled)" : "") << '\n';
+    out << "  " << std::setw(7) << (view.refined ? "yes" : "no");
+    if (row.checked > 0) {
+      out << std::setw(17) << row.checked << std::setw(10) << row.checkSeparation << " ("
+          << row.heldOutResponseSeparation << ")";
+    } else {
+      out << "  none (too few searches)";
+    }
+    out << (row.pooled ? "  (curve pooled)" : "") << '\n';
   }
   return out.str();
 }

@@ -5,8 +5,10 @@
 // confidence to the probability that the search is right (ViewModel::calibration), fitted on
 // annotated faces the experts did not learn from (photos their source's `per_view` cap left out),
 // each searched from starts near its truth and from wrong ones (moved, turned a view away), as a
-// tracker or a start grid would meet them. It also marks the views the point refiner learnt
-// (ViewModel::refined) from where its photos sat.
+// tracker or a start grid would meet them. From the same searches each view learns its own check
+// (ViewModel::check, core/model/view_check.hpp): the response does not order a side view's right
+// fits above its wrong ones, the gradient features at the view's visible points do. It also marks
+// the views the point refiner learnt (ViewModel::refined) from where its photos sat.
 #pragma once
 
 #include <cstdint>
@@ -23,7 +25,8 @@ namespace clm3d {
 struct ViewCalibrationSettings {
   // Faces searched per calibrated view (a view and its mirror image count as one): the held-out
   // ones first, then, where there are too few, faces the experts learnt from.
-  int facesPerView = 60;
+  // 150: the views' checks learn from about 300-700 searches each (60 gave them too few).
+  int facesPerView = 150;
   // A search is right when its mean error over the face's trusted points is below this share of
   // their box (sqrt(w h)); the check's line of 0.15 eye distances is about 0.07 of a frontal box.
   double rightBelow = 0.08;
@@ -41,6 +44,12 @@ struct ViewCalibrationSettings {
   // -80..80 degrees the error over the face box at |yaw| 30-60 went from 0.058 to 0.121
   // (docs/fitting.md#views-on-one-scale).
   double refinerShare = 0.0;
+  // Each view's own check (ViewModel::check): the ridge of its linear score, every how many faces
+  // one is kept out to fit its curve and measure it, and the fewest right and wrong searches a
+  // view must have to learn one (a quarter as many among the kept-out faces).
+  double checkRidge = 0.2;
+  int checkCalibrationEvery = 5;
+  int minCheckPerClass = 20;
   std::uint64_t seed = 1;
   int threads = 0;
 };
@@ -56,6 +65,11 @@ struct ViewCalibrationRow {  // one calibrated view, for the training report
   double separation = 0.5;
   bool pooled = false;  // too few searches: the curve is that of its yaw, or of all views
   int refinerFaces = 0;
+  // The view's check, measured on the searches of the faces it did not learn from (`checked`;
+  // 0: the view has no check): its ROC area and that of the response on the same searches.
+  int checked = 0;
+  double checkSeparation = 0.5;
+  double heldOutResponseSeparation = 0.5;
 };
 
 // Sets every view's calibration and `refined` in `model` (trained: shape, views with experts)

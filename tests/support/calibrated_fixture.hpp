@@ -52,6 +52,9 @@ inline CalibratedFixture calibrateFitTestModel() {
   ViewCalibrationSettings settings;
   settings.facesPerView = 16;
   settings.minPerClass = 4;
+  // 40-44 searches a view: every fourth face's measure the checks, at least 8 of each class teach.
+  settings.minCheckPerClass = 8;
+  settings.checkCalibrationEvery = 4;
   settings.threads = 2;
   fixture.rows = calibrateViews(fixture.model, photos, placements, settings);
   return fixture;

@@ -553,5 +553,49 @@ TEST(ModelFile, ViewCalibrationAndRefinedViewsRoundTrip) {
       {{"\"calibration\":[12.5,-6.25]", "\"calibration\":[12.5]", "views[0].calibration"}});
 }
 
+// Version 8: a stored view's check is written in its header entry and its arrays after the
+// refiner's, and read back exactly; its mirrored view writes none and gets its source's; a check
+// with a bad window or landmarks out of order is refused naming the view.
+TEST(ModelFile, ViewChecksRoundTrip) {
+  ClmModel model = tinyModelWithExperts();
+  EXPECT_EQ(headerOf(serializeModel(model)).find("\"check\""), std::string::npos);
+  ViewCheck check;
+  check.landmarks = {0, 1, 2};
+  check.meanShape.resize(2, 3);
+  check.meanShape << -0.5, 0.5, 0.0, -0.25, -0.25, 0.5;
+  const Eigen::Index d = 3 * kDescentFeaturesPerPoint;
+  check.classifier.window = 0.25;
+  check.classifier.featureMean = Eigen::VectorXf::LinSpaced(d, 0.0f, 0.2f);
+  check.classifier.weights = Eigen::VectorXf::LinSpaced(d, -0.01f, 0.03f);
+  check.classifier.bias = -0.125;
+  check.classifier.slope = 3.5;
+  check.classifier.offset = 0.75;
+  model.views[0].check = check;
+  model.views[2] = mirrorView(model.views[0], model.scheme());
+  const std::string bytes = serializeModel(model);
+  const std::string header = headerOf(bytes);
+  const auto first = header.find("\"check\"");
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(header.find("\"check\"", first + 1), std::string::npos) << "one stored check";
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  EXPECT_TRUE(loaded.views[1].check.empty());
+  for (const std::size_t v : {0u, 2u}) {
+    const ViewCheck& read = loaded.views[v].check;
+    EXPECT_EQ(read.landmarks, check.landmarks) << v;
+    EXPECT_EQ(read.meanShape, check.meanShape) << v;
+    EXPECT_EQ(read.classifier.featureMean, check.classifier.featureMean) << v;
+    EXPECT_EQ(read.classifier.weights, check.classifier.weights) << v;
+    EXPECT_EQ(read.classifier.bias, check.classifier.bias) << v;
+    EXPECT_EQ(read.classifier.slope, check.classifier.slope) << v;
+    EXPECT_EQ(read.classifier.offset, check.classifier.offset) << v;
+    EXPECT_EQ(read.classifier.window, check.classifier.window) << v;
+  }
+  expectEditsRefused(bytes, "\"check\"",
+                     {{"\"window\":0.25", "\"window\":9.0", "views[0].check"},
+                      {"\"landmarks\":[0,1,2]", "\"landmarks\":[1,0,2]", "views[0].check"},
+                      {"\"landmarks\":[0,1,2]", "\"landmarks\":[0,1]", "bytes of arrays"}});
+}
+
 }  // namespace
 }  // namespace clm3d

@@ -9,6 +9,7 @@
 
 #include "core/detect/start_search.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/refine/view_check.hpp"
 #include "tests/support/calibrated_fixture.hpp"
 
 namespace clm3d {
@@ -78,6 +79,41 @@ TEST(ViewCalibration, ARightFitInItsViewIsMoreProbableThanOneAViewAway) {
   const FitResult searched = searchNeighbouringViews(fitter, model, scene.image, stayed, 0.02);
   EXPECT_EQ(searched.view, side);
   EXPECT_LT(meanError(searched.points, scene.truthPoints) / scene.interOcular, 0.08);
+}
+
+// Each calibrated view also learns its own check (ViewModel::check) from the searches' features,
+// measured on the searches of every fourth face, which it did not learn from; a mirrored view
+// holds its source's. On the held-out head at -30 degrees, the check takes the right fit in the
+// -30 view for right and the same points moved half an eye distance for wrong.
+TEST(ViewCalibration, EveryViewLearnsACheckThatTellsARightFitFromAMovedOne) {
+  const test::CalibratedFixture& fixture = test::calibratedFitTestModel();
+  const ClmModel& model = fixture.model;
+  const std::string table = formatViewCalibration(model, fixture.rows);
+  for (const ViewCalibrationRow& row : fixture.rows) {
+    EXPECT_GT(row.checked, 0) << table;
+    EXPECT_FALSE(model.views[static_cast<std::size_t>(row.view)].check.empty()) << table;
+  }
+  const int left = viewAtYaw(model, -30.0);
+  const int right = viewAtYaw(model, 30.0);
+  ASSERT_GE(left, 0);
+  ASSERT_GE(right, 0);
+  EXPECT_EQ(model.views[static_cast<std::size_t>(right)].check.classifier.weights,
+            model.views[static_cast<std::size_t>(left)].check.classifier.weights);
+
+  const test::FitScene scene = test::makeFitScene(model, 0.0, -30.0, test::kHeldOutHead, 60.0);
+  FitSettings settings;
+  settings.optimiser = "rlms";
+  Fitter fitter(model, scene.camera, settings);
+  const FitResult inView = fitter.fit(scene.image, scene.truth, left);
+  ASSERT_LT(meanError(inView.points, scene.truthPoints) / scene.interOcular, 0.08);
+  // The same points half an eye distance to the side, as a search misled by a start would leave
+  // them (the check's wrong starts were moved so far).
+  Eigen::Matrix2Xd moved = inView.points;
+  moved.row(0).array() += 0.5 * scene.interOcular;
+  const double rightCheck = viewCheckProbability(model, left, scene.image, inView.points);
+  const double movedCheck = viewCheckProbability(model, left, scene.image, moved);
+  EXPECT_GT(rightCheck, 0.8) << table;  // 0.98 measured
+  EXPECT_LT(movedCheck, 0.2) << table;  // 0.001 measured
 }
 
 TEST(ViewCalibration, NothingChangesWithoutPhotosOrPlacements) {
