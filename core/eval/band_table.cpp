@@ -35,8 +35,12 @@ std::string formatBandLines(const BandTable& table) {
           << "  error/eye " << formatErrorValue(band.eyeError) << "  within "
           << fixedText(table.threshold, 2, "") << ": "
           << (std::isfinite(band.foundShare) ? fixedText(100.0 * band.foundShare, 1, "") + "%"
-                                             : std::string("n/a"))
-          << '\n';
+                                             : std::string("n/a"));
+      if (band.offFace >= 0) {
+        out << "  off the face (error/box > " << fixedText(table.offFaceAbove, 2, "")
+            << "): " << band.offFace;
+      }
+      out << '\n';
     }
   }
   return out.str();

@@ -16,6 +16,8 @@ struct BandFigures {
   double medianBoxError = 0.0;  // its median; NaN if none
   double eyeError = 0.0;        // mean error / eye distance; NaN if none
   double foundShare = 0.0;      // points within the threshold / true points; NaN if none
+  int offFace =
+      -1;  // fitted ones whose error / box exceeds BandTable::offFaceAbove; -1: not counted
 };
 
 struct BandTable {
@@ -24,12 +26,14 @@ struct BandTable {
   int unbanded = 0;           // faces or frames in no band
   std::string faceWord = "faces";  // "faces" (photos) or "frames" (sequences)
   double threshold = 0.18;
+  double offFaceAbove = 0.08;
   std::vector<std::string> labels;             // one per method
   std::vector<std::vector<BandFigures>> rows;  // [method][band]
 };
 
 // "yaw bands (SOURCE; N FACES in no band)" then a row per band and method: "|yaw| A-B  METHOD
-// FACES F  fitted K (P%)  error/box E  median M  error/eye D  within T: X%".
+// FACES F  fitted K (P%)  error/box E  median M  error/eye D  within T: X%", then, where counted,
+// "  off the face (error/box > L): W".
 std::string formatBandLines(const BandTable& table);
 
 // Markdown, the methods side by side (docs/real-faces.md): "| \|yaw\| | photos | M fitted | M

@@ -72,6 +72,11 @@ std::vector<Option<R>> makeOptions() {
       textOption<R>(commandOption("yaw-bands",
                                   "Edges of the |yaw| bands in degrees, ascending, e.g. 0,45,90"),
                     &R::yawBands),
+      realOption<R>(commandOption("off-face-above",
+                                  "With yaw bands: a fitted face whose error over its face box "
+                                  "exceeds this counts as off the face",
+                                  0.0, 10.0),
+                    &R::offFaceAbove),
       path("band-table",
            "With --poses or --model: write the band table as Markdown, the methods side by side "
            "(faces fitted and error / face box per |yaw| band)",
@@ -114,6 +119,7 @@ CommandReport runFolders(const R& args, const Scheme& scheme, const std::vector<
   output.notesToStderr = args.json;
   auto report = evaluatePointFolders(args.truthDir, args.predictionDirs, args.labels, scheme,
                                      selected, args.threshold);
+  report.offFaceAbove = args.offFaceAbove;
   const std::vector<double> edges = parseBandEdges(args.yawBands);
   if (!args.poses.empty()) {
     addYawBands(report, yawsByStem(report, readPoseCsv(args.poses)), edges,

@@ -27,6 +27,7 @@ struct EvalPointsRequest {
   bool json = false;
   bool roc = false;
   double wrongAbove = 0.15;
+  double offFaceAbove = 0.08;
   std::filesystem::path poses, model;
   std::string yawBands = "0,30,60,90";
   std::filesystem::path bandTable, out;

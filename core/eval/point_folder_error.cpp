@@ -226,6 +226,7 @@ std::string formatPointFolderJson(const PointFolderReport& report) {
                        {"max_abs_yaw", report.bandEdges[b + 1]},
                        {"faces", band.faces},
                        {"fitted", band.fitted},
+                       {"off_face", band.offFace},
                        {"mean_box_error", number(band.meanBoxError)},
                        {"mean_error", number(band.meanEyeError)},
                        {"true_points", band.truePoints},

@@ -47,6 +47,9 @@ struct PointFolderMethod {
     int truePoints = 0;       // selected points present in the band's truths
     int foundPoints = 0;      // of those, fitted and within the threshold
     double foundShare = 0.0;  // foundPoints / truePoints (unfitted faces count as not found)
+    // Of the fitted faces, those whose error over the face box exceeds the report's offFaceAbove:
+    // fits reported although they are off the face.
+    int offFace = 0;
   };
   std::vector<Band> bands;
 };
@@ -70,6 +73,9 @@ struct PointFolderReport {
   std::vector<double> yawDeg;
   std::vector<double> bandEdges;
   std::string yawSource;
+  // The error over the face box above which a fitted face counts as off the face in the bands
+  // (0.08: the line the views' checks learn right from wrong by, docs/training.md).
+  double offFaceAbove = 0.08;
 };
 
 // Truths are the folder's *.pts files, read with readScoredTruth (core/eval/scored_truth.hpp: for

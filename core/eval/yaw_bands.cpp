@@ -189,6 +189,7 @@ void addYawBands(PointFolderReport& report, std::vector<double> yawDeg, std::vec
       ++band.fitted;
       band.foundPoints += result->foundPoints;
       if (std::isfinite(result->boxError)) boxErrors[b].push_back(result->boxError);
+      if (result->boxError > report.offFaceAbove) ++band.offFace;
       if (std::isfinite(result->error)) eyeErrors[b].push_back(result->error);
     }
     for (std::size_t k = 0; k < count; ++k) {
@@ -215,12 +216,13 @@ BandTable folderBandTable(const PointFolderReport& report) {
   for (const double yaw : report.yawDeg) table.unbanded += yawBandOf(yaw, report.bandEdges) < 0;
   table.faceWord = "faces";
   table.threshold = report.threshold;
+  table.offFaceAbove = report.offFaceAbove;
   for (const PointFolderMethod& m : report.methods) {
     table.labels.push_back(m.label);
     std::vector<BandFigures> row;
     for (const PointFolderMethod::Band& band : m.bands) {
       row.push_back({band.faces, band.fitted, band.meanBoxError, band.medianBoxError,
-                     band.meanEyeError, band.foundShare});
+                     band.meanEyeError, band.foundShare, band.offFace});
     }
     table.rows.push_back(std::move(row));
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -133,6 +134,38 @@ TEST(EvalPointsFolderCli, YawBandsFromAPosesCsv) {
   const auto none =
       runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string());
   EXPECT_TRUE(test::contains(none.output, "yaw bands: skipped")) << none.output;
+
+  // Off the face: a fitted face whose error over its box exceeds --off-face-above. img1 (0.1 eye
+  // distances) and img2 (0.2) share their box, so a line between their box errors counts img2
+  // (band 45-90) and not img1 (band 0-45).
+  const fs::path csv = f.dir / "rows.csv";
+  ASSERT_EQ(runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " +
+                     f.methodA.string() + " --csv " + csv.string())
+                .exitCode,
+            0);
+  std::map<std::string, double> boxError;
+  std::istringstream rows(test::readFile(csv));
+  for (std::string line; std::getline(rows, line);) {
+    std::vector<std::string> cells;
+    std::istringstream cellStream(line);
+    for (std::string cell; std::getline(cellStream, cell, ',');) cells.push_back(cell);
+    if (cells.size() > 9 && cells[2] == "ok") boxError[cells[0]] = std::stod(cells[9]);
+  }
+  ASSERT_EQ(boxError.size(), 2U);
+  ASSERT_LT(boxError["img1"], boxError["img2"]);
+  const double line = 0.5 * (boxError["img1"] + boxError["img2"]);
+  const auto off = runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " +
+                            f.methodA.string() + " --poses " + poses.string() +
+                            " --yaw-bands 0,45,90 --off-face-above " + std::to_string(line));
+  ASSERT_EQ(off.exitCode, 0) << off.output;
+  EXPECT_TRUE(test::contains(off.output, "|yaw| 0-45  fits-a  faces 1  fitted 1")) << off.output;
+  const auto at = [&](const std::string& band) {
+    const auto start = off.output.find("|yaw| " + band + "  fits-a");
+    return off.output.substr(start, off.output.find('\n', start) - start);
+  };
+  EXPECT_TRUE(test::contains(at("0-45"), "): 0")) << off.output;
+  EXPECT_TRUE(test::contains(at("45-90"), "): 1")) << off.output;
+  EXPECT_EQ(json["methods"][0]["bands"][1]["off_face"], boxError["img2"] > 0.08 ? 1 : 0);
   const auto bad =
       runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
                " --poses " + poses.string() + " --yaw-bands 60,30");
