@@ -20,8 +20,10 @@ namespace clm3d {
 // 4: an optional point refiner (header "refiner"; its arrays after the views').
 // 5: the refiner's optional check (refiner "check"; its two arrays after the stages').
 // 6: the refiner stages' optional shape weights (refiner "shapeWeights"; after each stage's bias).
-// Version 1 files (no experts, every view stored) and versions 2 to 5 still load.
-inline constexpr std::uint32_t kModelFormatVersion = 7;
+// 7: views' calibration and "refined" flags.
+// 8: the provenance's optional "adaptedFrom" (an adapted model's general model, video, frames).
+// Version 1 files (no experts, every view stored) and versions 2 to 7 still load.
+inline constexpr std::uint32_t kModelFormatVersion = 8;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);
