@@ -39,13 +39,19 @@ ClmModel adaptToVideo(const ClmModel& general, const std::filesystem::path& gene
                     "frames in the studio or with clm3d truth --keyframe FRAME=F.pts");
   }
 
-  // The corrected frames, read in one pass up to the last of them.
+  // The corrected frames in order, seeking over long stretches between them (decoding every
+  // frame up to the last correction of a long video costs more than the adaptation).
+  constexpr int kSeekGap = 16;
   VideoReader reader(video);
   std::vector<AdaptationFrame> frames;
   cv::Mat image;
   std::size_t next = 0;
   const int last = corrected.back();
-  while (next < corrected.size() && reader.read(image)) {
+  while (next < corrected.size()) {
+    if (corrected[next] - (reader.frameIndex() + 1) > kSeekGap && !reader.seek(corrected[next])) {
+      break;  // beyond the video: reported below
+    }
+    if (!reader.read(image)) break;
     if (cancel) cancel->throwIfCancelled();
     const int index = reader.frameIndex();
     if (progress) progress(0.2 * std::min(1.0, (index + 1.0) / (last + 1.0)), "reading frames");
@@ -61,8 +67,8 @@ ClmModel adaptToVideo(const ClmModel& general, const std::filesystem::path& gene
   }
   if (frames.empty() || frames.back().frame != last) {
     throwInputError(video, "gives no image for corrected frame " + std::to_string(last) + " of " +
-                               truthPath.string() + " (the video has " +
-                               std::to_string(reader.frameIndex() + 1) + " frames)");
+                               truthPath.string() + " (it declares " +
+                               std::to_string(reader.frameCount()) + " frames)");
   }
 
   const auto adaptProgress = [&](double fraction, std::string_view stage) {

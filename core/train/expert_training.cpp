@@ -306,7 +306,9 @@ PatchExpert adaptPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
   Eigen::VectorXf targets;
   trainingWindows(regions, settings, windows, targets);
   const Eigen::MatrixXd x = windows.cast<double>();
-  Eigen::MatrixXd gram = x * x.transpose();
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(pixels, pixels);
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(x);
+  gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
   Eigen::VectorXd rhs = x * targets.cast<double>();
   // Normalised windows have unit variance, so each adds about 1 to every diagonal entry: a prior
   // of priorRegions regions weighs as many regions' windows would.

@@ -142,7 +142,8 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
     photos.push_back(std::move(photo));
   }
   const auto photoProgress = [&](double fraction, std::string_view stage) {
-    if (progress) progress(0.5 * fraction, stage);
+    // preparePhotoSamples's fractions run past 1 in its last step.
+    if (progress) progress(0.5 * std::min(fraction, 1.0), stage);
   };
   std::vector<PhotoPlacement> placements;
   const std::vector<PhotoSample> samples = preparePhotoSamples(
