@@ -18,6 +18,7 @@ void addFitCommand(CLI::App& root);
 void addTrackCommand(CLI::App& root);
 void addTruthCommand(CLI::App& root);
 void addReviewCommand(CLI::App& root);
+void addAdaptCommand(CLI::App& root);
 void addFramesCommand(CLI::App& root);
 void addIctTextureCommand(CLI::App& root);
 void addEvalPointsCommand(CLI::App& root);

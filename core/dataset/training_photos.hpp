@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <opencv2/core/mat.hpp>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct TrainingPhoto {
   int source = 0;               // index of its source in manifest.photos
   bool refiner = true;          // the point refiner learns from it (its source's `refiner`)
   int perView = 0;              // its source's cap on samples per view (0 = none)
+  // When not empty, the image itself (8-bit BGR or grey: a video frame, clm3d adapt), used instead
+  // of reading `image`, which then only names it.
+  cv::Mat pixels;
 };
 
 // Every photo of every photos source, in manifest order. InputError naming the file: an image

@@ -21,6 +21,19 @@ struct ModelProvenance {
   std::string notes;
 };
 
+// Where an adapted model came from (`clm3d adapt`, core/train/model_adaptation.hpp): the general
+// model, the video and the corrected frames it learnt from. Empty for a model trained from a
+// dataset.
+struct ModelAdaptation {
+  std::string model;        // the general model's file, as given
+  std::string modelCrc32;   // CRC-32 of that file's bytes, 8 lower-case hex digits
+  std::string video;        // the video of the corrected frames
+  std::string truth;        // the ground truth they were read from
+  std::vector<int> frames;  // the corrected frames it learnt from, 0-based, ascending
+
+  bool empty() const { return model.empty() && video.empty() && truth.empty() && frames.empty(); }
+};
+
 struct ClmModel {
   std::string schemeJson;  // the scheme file text (Scheme::fromJson(schemeJson, ...))
   ShapeModel shape;
@@ -29,6 +42,7 @@ struct ClmModel {
   double patchRatio = 0.24;  // patchSize / inter-ocular distance (pixels) at the finest scale
   std::string settingsJson;  // the training settings, as JSON (an object, or empty)
   ModelProvenance provenance;
+  ModelAdaptation adaptation;  // format 8; empty unless the model was adapted to a video
   // Refinement of the fitted 2D points, learnt from annotated photos; empty when the model was
   // trained without photos (or asked not to train one).
   DescentRefiner refiner;

@@ -29,6 +29,7 @@ constexpr std::int64_t kMaxViews = 1'000;
 constexpr std::int64_t kMaxScales = 16;
 constexpr std::int64_t kMaxPatchSize = 1'024;
 constexpr std::int64_t kMaxExpertUnits = 64;
+constexpr std::size_t kMaxFrames = 10'000'000;  // an adapted model's frames
 
 using nlohmann::json;
 
@@ -95,12 +96,21 @@ class Reader {
 
 // ---- header JSON ----
 
-json provenanceJson(const ModelProvenance& provenance) {
-  return {{"dataset", provenance.dataset},
-          {"created", provenance.created},
-          {"toolVersion", provenance.toolVersion},
-          {"seed", provenance.seed},
-          {"notes", provenance.notes}};
+json provenanceJson(const ModelProvenance& provenance, const ModelAdaptation& adaptation) {
+  json out = {{"dataset", provenance.dataset},
+              {"created", provenance.created},
+              {"toolVersion", provenance.toolVersion},
+              {"seed", provenance.seed},
+              {"notes", provenance.notes}};
+  // Version 8, written only for an adapted model.
+  if (!adaptation.empty()) {
+    out["adaptedFrom"] = {{"model", adaptation.model},
+                          {"modelCrc32", adaptation.modelCrc32},
+                          {"video", adaptation.video},
+                          {"truth", adaptation.truth},
+                          {"frames", adaptation.frames}};
+  }
+  return out;
 }
 
 bool samePatchModel(const PatchModel& a, const PatchModel& b) {
@@ -185,7 +195,7 @@ json headerJson(const ClmModel& model, const std::vector<int>& mirrorOf) {
   }
   return {{"scheme", model.schemeJson},
           {"settings", model.settingsJson},
-          {"provenance", provenanceJson(model.provenance)},
+          {"provenance", provenanceJson(model.provenance, model.adaptation)},
           {"singleView", model.singleView},
           {"patchRatio", model.patchRatio},
           {"shape",
@@ -265,6 +275,22 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
   model.provenance.toolVersion = provenance.requiredString("toolVersion", true);
   model.provenance.notes = provenance.requiredString("notes", true);
   model.provenance.seed = provenance.unsignedInteger("seed");
+  if (version >= 8 && provenance.has("adaptedFrom")) {
+    JsonFields adapted = provenance.object("adaptedFrom");
+    ModelAdaptation& out = model.adaptation;
+    out.model = adapted.requiredString("model", true);
+    out.modelCrc32 = adapted.requiredString("modelCrc32", true);
+    out.video = adapted.requiredString("video", true);
+    out.truth = adapted.requiredString("truth", true);
+    for (const Header& frame : array(adapted, "frames", kMaxFrames)) {
+      if (!frame.is_number_integer() || frame < 0 ||
+          frame >= static_cast<std::int64_t>(kMaxFrames)) {
+        fieldError(adapted.name("frames"), "entries must be frame indices");
+      }
+      out.frames.push_back(frame.get<int>());
+    }
+    adapted.rejectUnknown();
+  }
   provenance.rejectUnknown();
   model.singleView = header.boolean("singleView");
   model.patchRatio = number(header, "patchRatio");

@@ -21,7 +21,8 @@ namespace clm3d {
 // 5: the refiner's optional check (refiner "check"; its two arrays after the stages').
 // 6: the refiner stages' optional shape weights (refiner "shapeWeights"; after each stage's bias).
 // 7: the views' optional calibration curves and "refined" flags.
-// 8: the stored views' optional checks (a view's "check"; its arrays after the refiner's).
+// 8: the stored views' optional checks (a view's "check"; its arrays after the refiner's) and the
+//    provenance's optional "adaptedFrom" (an adapted model's general model, video, frames).
 // Version 1 files (no experts, every view stored) and versions 2 to 7 still load.
 inline constexpr std::uint32_t kModelFormatVersion = 8;
 

@@ -81,6 +81,13 @@ std::string describeModelFile(const std::filesystem::path& path) {
   out << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"
       << "created: " << p.created << " by clm3d " << p.toolVersion << ", seed " << p.seed << "\n";
   if (!p.notes.empty()) out << "notes: " << p.notes << "\n";
+  if (const ModelAdaptation& a = model.adaptation; !a.empty()) {
+    std::string frames;
+    for (const int frame : a.frames) frames += (frames.empty() ? "" : ",") + std::to_string(frame);
+    out << "adapted from: " << a.model << " (CRC-32 " << a.modelCrc32 << ")\n"
+        << "adapted to: " << a.video << ", " << a.frames.size() << " corrected frames of "
+        << a.truth << ": " << frames << "\n";
+  }
   if (!model.settingsJson.empty()) out << "settings: " << model.settingsJson << "\n";
   return out.str();
 }

@@ -251,10 +251,31 @@ PatchExpert trainNeuralField(const Eigen::Ref<const Eigen::MatrixXf>& regions,
   return padded(linear, units);
 }
 
-}  // namespace
+// The logistic output of a filter: true positions against displacements of 2 pixels or more.
+Eigen::Vector2d expertLogistic(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                               const ExpertTrainingSettings& settings,
+                               const Eigen::VectorXf& filter) {
+  const int patch = settings.patchSize;
+  const int regionSize = patch + 2 * settings.radius;
+  std::vector<double> scores;
+  std::vector<int> labels;
+  Eigen::VectorXf x(patch * patch);
+  for (Eigen::Index column = 0; column < regions.cols(); ++column) {
+    const float* region = regions.col(column).data();
+    for (const Offset offset : offsetsFor(settings.seed, column, settings)) {
+      const int chebyshev = std::max(std::abs(offset.dx), std::abs(offset.dy));
+      if (chebyshev == 1) continue;  // neither right nor wrong
+      windowAt(region, regionSize, patch, settings.radius, offset, x);
+      normalisePatch(x);
+      scores.push_back(filter.dot(x));
+      labels.push_back(chebyshev == 0 ? 1 : 0);
+    }
+  }
+  return fitLogistic(scores, labels);
+}
 
-PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
-                             const ExpertTrainingSettings& settings) {
+void checkExpertRegions(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                        const ExpertTrainingSettings& settings) {
   const int patch = settings.patchSize;
   const int regionSize = patch + 2 * settings.radius;
   if (patch < 2 || settings.radius < 1) throw Error("expert training: bad patch size or radius");
@@ -265,6 +286,51 @@ PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
     throw Error("expert training: regions of " + std::to_string(regions.rows()) +
                 " values, expected " + std::to_string(regionSize * regionSize));
   }
+}
+
+}  // namespace
+
+PatchExpert adaptPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                             const ExpertTrainingSettings& settings, const PatchExpert& general,
+                             double priorRegions) {
+  checkExpertRegions(regions, settings);
+  const int patch = settings.patchSize;
+  const int pixels = patch * patch;
+  if (general.units() != 1 || general.weights.rows() != pixels) {
+    throw Error("expert adaptation: the general expert has " + std::to_string(general.units()) +
+                " units of " + std::to_string(general.weights.rows()) +
+                " weights; only one-unit experts of " + std::to_string(pixels) + " are adapted");
+  }
+  if (!(priorRegions >= 0.0)) throw Error("expert adaptation: negative prior weight");
+  Eigen::MatrixXf windows;
+  Eigen::VectorXf targets;
+  trainingWindows(regions, settings, windows, targets);
+  const Eigen::MatrixXd x = windows.cast<double>();
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(pixels, pixels);
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(x);
+  gram.triangularView<Eigen::StrictlyUpper>() = gram.transpose();
+  Eigen::VectorXd rhs = x * targets.cast<double>();
+  // Normalised windows have unit variance, so each adds about 1 to every diagonal entry: a prior
+  // of priorRegions regions weighs as many regions' windows would.
+  const double windowsPerRegion = static_cast<double>(windows.cols()) / regions.cols();
+  const double prior = std::max(priorRegions * windowsPerRegion, 1e-6);
+  const Eigen::VectorXd generalFilter = general.weights.col(0).cast<double>();
+  gram.diagonal().array() += prior;
+  rhs += prior * generalFilter;
+  Eigen::VectorXd weights = gram.ldlt().solve(rhs);
+  if (!weights.allFinite()) throw Error("expert adaptation: the regression did not solve");
+  weights.array() -= weights.mean();
+  const Eigen::VectorXf filter = weights.cast<float>();
+  const Eigen::Vector2d logistic = expertLogistic(regions, settings, filter);
+  return PatchExpert::logistic(filter, static_cast<float>(logistic[0]),
+                               static_cast<float>(logistic[1]));
+}
+
+PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                             const ExpertTrainingSettings& settings) {
+  checkExpertRegions(regions, settings);
+  const int patch = settings.patchSize;
+  const int regionSize = patch + 2 * settings.radius;
   const int pixels = patch * patch;
   // Gram matrix and right-hand side of the ridge regression, in double, from batches of rows.
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(pixels, pixels);
@@ -301,21 +367,7 @@ PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
   weights.array() -= weights.mean();  // normalised patches are zero-mean: no effect on scores
 
   const Eigen::VectorXf filter = weights.cast<float>();
-  std::vector<double> scores;
-  std::vector<int> labels;
-  Eigen::VectorXf x(pixels);
-  for (Eigen::Index column = 0; column < regions.cols(); ++column) {
-    const float* region = regions.col(column).data();
-    for (const Offset offset : offsetsFor(settings.seed, column, settings)) {
-      const int chebyshev = std::max(std::abs(offset.dx), std::abs(offset.dy));
-      if (chebyshev == 1) continue;  // neither right nor wrong
-      windowAt(region, regionSize, patch, settings.radius, offset, x);
-      normalisePatch(x);
-      scores.push_back(filter.dot(x));
-      labels.push_back(chebyshev == 0 ? 1 : 0);
-    }
-  }
-  const Eigen::Vector2d logistic = fitLogistic(scores, labels);
+  const Eigen::Vector2d logistic = expertLogistic(regions, settings, filter);
   const PatchExpert linear = PatchExpert::logistic(filter, static_cast<float>(logistic[0]),
                                                    static_cast<float>(logistic[1]));
   return settings.units > 1 ? trainNeuralField(regions, settings, linear) : linear;

@@ -18,13 +18,13 @@ namespace clm3d {
 
 struct ExpertTrainingSettings {
   int patchSize = 20;
-  int radius = 6;              // regions are patchSize + 2 radius pixels square
+  int radius = 6;               // regions are patchSize + 2 radius pixels square
   int negativesPerRegion = 16;  // displaced patches drawn per region (2..radius pixels away)
-  double ridge = 0.1;          // ridge weight relative to the mean diagonal of the data's Gram
-  std::uint64_t seed = 1;      // the draw of the displacements
-  int units = 1;               // 1: a linear filter with a logistic output; more: a neural field
-  int epochs = 8;              // neural field: passes over the training windows
-  float learningRate = 1e-3f;  // neural field: Adam's initial step (decays to a tenth)
+  double ridge = 0.1;           // ridge weight relative to the mean diagonal of the data's Gram
+  std::uint64_t seed = 1;       // the draw of the displacements
+  int units = 1;                // 1: a linear filter with a logistic output; more: a neural field
+  int epochs = 8;               // neural field: passes over the training windows
+  float learningRate = 1e-3f;   // neural field: Adam's initial step (decays to a tenth)
 };
 
 // `regions`: one column per training region, (patchSize + 2 radius)^2 raw grey values each,
@@ -33,5 +33,18 @@ struct ExpertTrainingSettings {
 // regions is valid but weak; the caller decides whether to train one.
 PatchExpert trainPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
                              const ExpertTrainingSettings& settings);
+
+// The expert `general` (one unit: a linear filter with a logistic output) moved towards `regions`
+// of one person: the filter minimises the same regression's squared error on the regions'
+// windows plus priorRegions x (windows per region) x |w - w_general|^2, i.e. the general filter
+// is a Gaussian prior worth `priorRegions` regions (maximum a posteriori adaptation, as a
+// speaker-adapted GMM keeps its universal model's means with a relevance factor): few regions
+// leave it nearly as it was, many outweigh it. The logistic gain and bias are fitted afresh to the
+// new filter's scores on the regions. settings.ridge is not used (the prior takes its place).
+// Throws Error for a general expert of more than one unit or of another patch size, and for
+// regions trainPatchExpert would refuse.
+PatchExpert adaptPatchExpert(const Eigen::Ref<const Eigen::MatrixXf>& regions,
+                             const ExpertTrainingSettings& settings, const PatchExpert& general,
+                             double priorRegions);
 
 }  // namespace clm3d

@@ -220,7 +220,8 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
     const TrainingPhoto& photo = photos[k];
     PhotoPlacement& placement = placed[k];
     placement.id = photo.id;
-    images[k] = cv::imread(photo.image.string(), cv::IMREAD_COLOR);
+    images[k] =
+        photo.pixels.empty() ? cv::imread(photo.image.string(), cv::IMREAD_COLOR) : photo.pixels;
     const int trusted =
         static_cast<int>(std::count(photo.trusted.begin(), photo.trusted.end(), true));
     if (images[k].empty()) {

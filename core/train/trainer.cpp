@@ -13,7 +13,6 @@ std::string_view ibug68SchemeJson();
 }  // namespace clm3d::embedded
 
 namespace clm3d {
-namespace {
 
 std::string utcNow() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -23,8 +22,6 @@ std::string utcNow() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return text;
 }
-
-}  // namespace
 
 std::string schemeJsonFor(const std::string& nameOrPath) {
   if (nameOrPath == "thesis25") return std::string(embedded::thesis25SchemeJson());

@@ -33,6 +33,9 @@ struct TrainingDetails {
   std::vector<ViewCalibrationRow> calibration;  // per calibrated view (none without photos)
 };
 
+// The time now as a model's provenance records it: ISO 8601 UTC, e.g. 2024-05-01T12:00:00Z.
+std::string utcNow();
+
 // The JSON text of a scheme given as "thesis25", "ibug68" or a path to a scheme file.
 std::string schemeJsonFor(const std::string& nameOrPath);
 

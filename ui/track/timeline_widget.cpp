@@ -118,6 +118,12 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
       if (f < 0 || f >= n) continue;
       painter.fillRect(QRectF(xOf(f) - 1.5, 1, 3, kMarkHeight), QColor(200, 30, 170));
     }
+    // Frames the adapted model changed (Adapt): green ticks along the bottom of the plot.
+    for (const int f : data_.changed) {
+      if (f < 0 || f >= n) continue;
+      painter.fillRect(QRectF(xOf(f) - 1.5, plot.bottom() - kMarkHeight, 3, kMarkHeight),
+                       QColor(30, 160, 60));
+    }
     // Current frame.
     painter.setPen(QPen(QColor(30, 90, 220), 2));
     const double x = xOf(std::clamp(current_, 0, n - 1));
@@ -131,8 +137,8 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
   const double y = height() - kLegendHeight + 13;
   const QString legend =
       tr("bars: confidence 0-1 (red = failed)    orange: error vs ground truth "
-         "(top = %1)    gold: keyframes    magenta: worth a look (N)    blue: current "
-         "frame")
+         "(top = %1)    gold: keyframes    magenta: worth a look (N)    green: changed by "
+         "Adapt    blue: current frame")
           .arg(errorScale(), 0, 'f', 2);
   painter.drawText(QPointF(plot.left(), y), legend);
 }

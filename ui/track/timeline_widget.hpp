@@ -19,6 +19,7 @@ struct TimelineData {
   std::vector<bool> keyframe;  // per frame
   std::vector<double> error;   // per frame, NaN where unknown
   std::vector<int> review;     // frames worth a look (core/track/review_list), any order
+  std::vector<int> changed;    // frames the last Adapt re-tracked differently, any order
 };
 
 class TimelineWidget : public QWidget {

@@ -8,6 +8,7 @@
 #include "core/review/review_overlay.hpp"
 #include "core/track/multi_face_tracker.hpp"
 #include "core/track/retrack.hpp"
+#include "core/track/video_adaptation.hpp"
 #include "core/video/video_reader.hpp"
 #include "core/video/video_writer.hpp"
 
@@ -97,6 +98,36 @@ FitState stateFromCorrected(const std::filesystem::path& video, const ClmModel& 
 }
 
 }  // namespace
+
+JobRunner::Job adaptJob(std::filesystem::path video, std::filesystem::path modelPath,
+                        std::shared_ptr<const ClmModel> model, GroundTruthSet truth,
+                        std::filesystem::path truthPath, AdaptSettings adapt,
+                        TrackerSettings settings, std::filesystem::path out,
+                        std::shared_ptr<AdaptOutcome> outcome) {
+  return [video = std::move(video), modelPath = std::move(modelPath), model = std::move(model),
+          truth = std::move(truth), truthPath = std::move(truthPath), adapt,
+          settings = std::move(settings), out = std::move(out),
+          outcome = std::move(outcome)](const ProgressCallback& progress, CancelToken& cancel) {
+    const std::shared_ptr<const ClmModel> general = modelOrLoad(model, modelPath, progress);
+    cancel.throwIfCancelled();
+    const auto adapting = [&](double fraction, std::string_view stage) {
+      progress(0.6 * fraction, stage);
+    };
+    auto adapted = std::make_shared<const ClmModel>(adaptToVideo(
+        *general, modelPath, video, truth, truthPath, adapt, &outcome->summary, adapting, &cancel));
+    cancel.throwIfCancelled();
+    const auto tracking = [&](double fraction, std::string_view stage) {
+      progress(0.6 + 0.4 * fraction, stage);
+    };
+    trackVideo(video, *adapted, settings, outcome->table, recordFits(outcome->fits, 0), tracking,
+               &cancel);
+    outcome->fits.resize(outcome->table.rows.size());
+    cancel.throwIfCancelled();
+    saveModel(*adapted, out);
+    outcome->model = std::move(adapted);
+    outcome->saved = out;
+  };
+}
 
 JobRunner::Job retrackJob(std::filesystem::path video, std::shared_ptr<const ClmModel> model,
                           TrackerSettings settings, int corrected, Eigen::Matrix2Xd points,

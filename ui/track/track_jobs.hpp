@@ -16,6 +16,7 @@
 #include "core/review/track_session.hpp"
 #include "core/track/retrack.hpp"
 #include "core/track/tracker.hpp"
+#include "core/train/model_adaptation.hpp"
 #include "ui/common/job_runner.hpp"
 
 namespace clm3d::ui {
@@ -65,6 +66,24 @@ JobRunner::Job loopRetrackJob(std::filesystem::path video, std::filesystem::path
                               std::shared_ptr<const ClmModel> model, TrackerSettings settings,
                               std::vector<int> frames, std::vector<TrackRow> previous,
                               RetrackRules rules, std::shared_ptr<LoopOutcome> outcome);
+
+struct AdaptOutcome {
+  std::shared_ptr<const ClmModel> model;  // the adapted model
+  std::filesystem::path saved;            // where it was written: empty unless the job finished
+  AdaptationSummary summary;
+  TrackTable table;  // every frame tracked with the adapted model
+  std::vector<std::optional<FrameFit>> fits;
+};
+
+// Adapts the model (`model`, or when null the one loaded from `modelPath`) to the keyframes of
+// `truth` (core/track/video_adaptation; `truthPath` is recorded as where they came from), tracks
+// every frame of `video` with the adapted model, and only then writes it to `out` (atomically):
+// a cancelled or failed job writes nothing.
+JobRunner::Job adaptJob(std::filesystem::path video, std::filesystem::path modelPath,
+                        std::shared_ptr<const ClmModel> model, GroundTruthSet truth,
+                        std::filesystem::path truthPath, AdaptSettings adapt,
+                        TrackerSettings settings, std::filesystem::path out,
+                        std::shared_ptr<AdaptOutcome> outcome);
 
 // Writes `out` (.mp4/.avi/.mkv) with every frame drawn by drawReviewOverlay: `shown` are the rows
 // to draw (the ground truth: one per frame, or one per face and frame when face by face; each row

@@ -158,6 +158,11 @@ void TrackPage::buildLayout() {
   retrackButton_->setObjectName("retrackButton");
   retrackButton_->setToolTip(
       tr("Track the following frames again, starting from this frame's corrected points"));
+  adaptButton_ = new QPushButton(tr("Adapt the model to this video"), this);
+  adaptButton_->setObjectName("adaptButton");
+  adaptButton_->setToolTip(
+      tr("Adapt the model to this person from the corrected frames (keyframes), keep both models, "
+         "and track the other frames again with the adapted one"));
   auto* undoButton = new QPushButton(tr("Undo"), this);
   undoButton->setObjectName("undoButton");
   auto* redoButton = new QPushButton(tr("Redo"), this);
@@ -175,6 +180,7 @@ void TrackPage::buildLayout() {
   truthLayout->addWidget(keyframeButton_);
   truthLayout->addWidget(interpolateButton_);
   truthLayout->addWidget(retrackButton_);
+  truthLayout->addWidget(adaptButton_);
   truthLayout->addLayout(undoRow);
   truthLayout->addWidget(saveButton_);
   truthLayout->addSpacing(8);
@@ -231,6 +237,7 @@ void TrackPage::buildLayout() {
   connect(keyframeButton_, &QPushButton::clicked, this, &TrackPage::toggleKeyframe);
   connect(interpolateButton_, &QPushButton::clicked, this, &TrackPage::interpolateKeyframes);
   connect(retrackButton_, &QPushButton::clicked, this, &TrackPage::retrackFromCurrentFrame);
+  connect(adaptButton_, &QPushButton::clicked, this, &TrackPage::adaptModelToVideo);
   connect(undoButton, &QPushButton::clicked, &undo_, &QUndoStack::undo);
   connect(redoButton, &QPushButton::clicked, &undo_, &QUndoStack::redo);
   connect(&undo_, &QUndoStack::canUndoChanged, undoButton, &QPushButton::setEnabled);
@@ -279,6 +286,8 @@ void TrackPage::setProject(Project* project) {
     trackOutcome_.reset();
     retrackOutcome_.reset();
     loopOutcome_.reset();
+    adaptOutcome_.reset();
+    adaptChanged_.clear();
     pendingLoopFrame_ = -1;
     player_->setPlaying(false);
     undo_.clear();
@@ -467,6 +476,7 @@ bool TrackPage::startTracking() {
     return false;
   }
   player_->setPlaying(false);
+  adaptChanged_.clear();
   trackOutcome_ = std::make_shared<TrackOutcome>();
   job_ = Job::Track;
   runner_->start(tr("tracking"), trackJob(session_.video().path, modelPath_, session_.model(),
@@ -568,6 +578,8 @@ void TrackPage::onJobEnded() {
     retrackOutcome_.reset();
   } else if (job == Job::Loop) {
     takeLoopOutcome();
+  } else if (job == Job::Adapt) {
+    takeAdaptOutcome();
   } else if (job == Job::Export && runner_->elapsedSeconds() >= 0 && fs::exists(exportPath_)) {
     emit statusMessage(tr("Overlay video written to %1").arg(qPath(exportPath_)));
   }
@@ -813,6 +825,7 @@ void TrackPage::refreshTimeline() {
   timeline.keyframe = session_.truth().keyframe;
   timeline.error = session_.errors();
   for (const ReviewItem& item : reviewList_) timeline.review.push_back(item.frame);
+  timeline.changed = adaptChanged_;
   timeline_->setData(std::move(timeline));
 }
 
@@ -830,6 +843,8 @@ void TrackPage::updateControls() {
   settingsButton_->setEnabled(!busy);
   interpolateButton_->setEnabled(!busy && session_.truth().keyframeCount() >= 2);
   retrackButton_->setEnabled(!busy && tracked && points);
+  adaptButton_->setEnabled(!busy && session_.hasVideo() && !modelPath_.empty() &&
+                           !session_.multiFace() && session_.truth().keyframeCount() > 0);
   saveButton_->setEnabled(!busy && session_.truth().table.landmarkCount > 0);
   compareButton_->setEnabled(!busy && session_.hasVideo());
   exportButton_->setEnabled(!busy && tracked);

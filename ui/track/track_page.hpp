@@ -43,6 +43,7 @@ struct LoopOutcome;
 class TrackFilesPanel;
 struct TrackOutcome;
 struct RetrackOutcome;
+struct AdaptOutcome;
 
 class TrackPage : public Page {
   Q_OBJECT
@@ -65,6 +66,14 @@ class TrackPage : public Page {
   bool startTracking();
   bool retrackFromCurrentFrame();
   bool exportOverlay(const std::filesystem::path& out);
+  // Adapt (track_page_adapt.cpp): the model adapted to this video's corrected frames on the
+  // worker (core/track/video_adaptation), saved into the project's models beside the general one,
+  // every frame tracked with it; the frames that are not keyframes take its rows (one undo step)
+  // and the timeline marks those that changed. Cancelled or failed, nothing changes. False (with
+  // the error dialog) without a video, a model or a keyframe, or face by face.
+  bool adaptModelToVideo();
+  // The frames the last Adapt changed (not keyframes), ascending.
+  const std::vector<int>& adaptChangedFrames() const { return adaptChanged_; }
   bool compareWith(const std::filesystem::path& reference);
   // Review what exists (ui/track/track_files_panel.hpp): loads a tracks or ground-truth CSV as the
   // video's track without tracking (keyframed corrections stay; one undo step when there is
@@ -141,7 +150,8 @@ class TrackPage : public Page {
   void pushReplacedTruths(const QString& text, const std::map<int, GroundTruthSet>& before);
   // --- end of several faces ---------------------------------------------------------------------
 
-  enum class Job { None, Track, Retrack, Export, Loop };
+  enum class Job { None, Track, Retrack, Export, Loop, Adapt };
+  void takeAdaptOutcome();  // track_page_adapt.cpp
   // The settings button (in `top`), the review panel (in `side`), the loop's shortcuts.
   void buildLoopControls(QBoxLayout* top, QBoxLayout* side);
   void loadProjectTrackerSettings();
@@ -205,6 +215,9 @@ class TrackPage : public Page {
   QPushButton* keyframeButton_ = nullptr;
   QPushButton* interpolateButton_ = nullptr;
   QPushButton* retrackButton_ = nullptr;
+  QPushButton* adaptButton_ = nullptr;
+  std::shared_ptr<AdaptOutcome> adaptOutcome_;
+  std::vector<int> adaptChanged_;
   QPushButton* compareButton_ = nullptr;
   QPushButton* saveButton_ = nullptr;
   QPushButton* exportButton_ = nullptr;

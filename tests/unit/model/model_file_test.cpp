@@ -597,5 +597,31 @@ TEST(ModelFile, ViewChecksRoundTrip) {
                       {"\"landmarks\":[0,1,2]", "\"landmarks\":[0,1]", "bytes of arrays"}});
 }
 
+// An adapted model (clm3d adapt) says where it came from (format 8); a model that was not adapted
+// writes no "adaptedFrom", and a malformed one is refused naming the field.
+TEST(ModelFile, AdaptationProvenanceRoundTrips) {
+  ClmModel model = test::makeTinyModel();
+  EXPECT_EQ(serializeModel(model).find("adaptedFrom"), std::string::npos);
+  model.adaptation.model = "models/general.clm3d";
+  model.adaptation.modelCrc32 = "0a1b2c3d";
+  model.adaptation.video = "clip.mp4";
+  model.adaptation.truth = "clip-truth.csv";
+  model.adaptation.frames = {0, 12, 40};
+  const std::string bytes = serializeModel(model);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  EXPECT_EQ(loaded.adaptation.model, "models/general.clm3d");
+  EXPECT_EQ(loaded.adaptation.modelCrc32, "0a1b2c3d");
+  EXPECT_EQ(loaded.adaptation.video, "clip.mp4");
+  EXPECT_EQ(loaded.adaptation.truth, "clip-truth.csv");
+  EXPECT_EQ(loaded.adaptation.frames, (std::vector<int>{0, 12, 40}));
+  const std::size_t at = bytes.find("[0,12,40]");
+  ASSERT_NE(at, std::string::npos);
+  std::string payload = bytes.substr(24);
+  payload.replace(payload.find("[0,12,40]"), 9, "[0,-1,40]");
+  EXPECT_NE(parseError(withPayload(bytes, payload)).find("adaptedFrom.frames"), std::string::npos)
+      << parseError(withPayload(bytes, payload));
+}
+
 }  // namespace
 }  // namespace clm3d
