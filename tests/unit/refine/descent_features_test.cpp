@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
@@ -147,14 +148,31 @@ TEST(DescentFeatures, AgreeWithTheWarpAffineAndAtan2Features) {
     const Eigen::VectorXf before = referenceFeatures(image, frame, points, window);
     ASSERT_EQ(now.size(), before.size());
     ASSERT_TRUE(now.allFinite());
-    largest = std::max(largest, double((now - before).cwiseAbs().maxCoeff()));
-    total += (now - before).cwiseAbs().sum();
-    count += now.size();
+    for (Eigen::Index p = 0; p < points.cols(); ++p) {
+      const auto block = [&](const Eigen::VectorXf& f) {
+        return f.segment(p * kDescentFeaturesPerPoint, kDescentFeaturesPerPoint);
+      };
+      const Eigen::Vector2d at = frame.apply(Eigen::Vector2d(points.col(p)));
+      if ((at.x() < 0.0 || at.x() > image.cols - 1) && (at.y() < 0.0 || at.y() > image.rows - 1)) {
+        // Beyond a corner the samples are replicated border pixels, mostly the corner's: our
+        // sampler finds no gradient where every sample is the corner pixel (a zero block), while
+        // warpAffine's fixed point found some. Not compared.
+        continue;
+      }
+      largest = std::max(largest, double((block(now) - block(before)).cwiseAbs().maxCoeff()));
+      total += (block(now) - block(before)).cwiseAbs().sum();
+      count += kDescentFeaturesPerPoint;
+    }
   }
-  // The windows' samples differ by at most 1/64 pixel of interpolation (warpAffine's fixed point)
-  // and the directions by a float rounding: features of unit-length blocks of 128 values.
+  // The windows' samples differ by up to 1/64 pixel of interpolation (warpAffine's fixed point),
+  // which matters most in the smallest windows (samples a quarter of a pixel apart), and the
+  // directions by a float rounding; the blocks are unit vectors of 128 values, each about 0.09.
+  // Measured: mean difference 0.00025, largest 0.007; windows sampled a pixel off or turned the
+  // wrong way differ by tens of times that.
+  std::cout << "[ mean difference " << total / static_cast<double>(count) << ", largest " << largest
+            << " ]\n";
   EXPECT_LT(largest, 0.02);
-  EXPECT_LT(total / static_cast<double>(count), 1e-3);
+  EXPECT_LT(total / static_cast<double>(count), 0.001);
 }
 
 TEST(DescentFeatures, AWindowWithoutAFinitePlaceIsZeroAndOthersAreUnchanged) {
