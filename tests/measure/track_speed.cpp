@@ -6,7 +6,8 @@
 // (TrackStep::fitMilliseconds, what `clm3d track` prints), the point refinement and check within
 // them, the detections, and writing the rows. Each figure is the median (and 90th percentile) of
 // its repetitions or frames, in milliseconds of wall time on the calling thread. Not in ctest (it
-// asserts nothing). Run:
+// asserts nothing). CLM3D_MEASURE_DETECTOR_PARTS=1 also times the detection without dlib and
+// with the frontal cascade alone. Run:
 //   CLM3D_MEASURE_MODEL=model.clm3d CLM3D_MEASURE_VIDEO=clip.mp4 scripts/measure.sh track-speed
 #include <gtest/gtest.h>
 
