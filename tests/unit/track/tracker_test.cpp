@@ -226,7 +226,9 @@ TEST(Tracker, AnOpenedReaderWithAGivenDetectorTracksAsTheFileDoes) {
   for (const TrackStep& step : steps) {
     EXPECT_GE(step.searches, 1);
     EXPECT_GE(step.fitMilliseconds, step.refineMilliseconds);
-    if (!step.detected) EXPECT_EQ(step.detectMilliseconds, 0.0);
+    if (!step.detected) {
+      EXPECT_EQ(step.detectMilliseconds, 0.0);
+    }
   }
 }
 
