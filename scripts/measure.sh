@@ -10,13 +10,18 @@
 #                                                visibility rule (docs/tracking.md; env
 #                                                CLM3D_MEASURE_MODEL, CLM3D_MEASURE_HEAD_SEED,
 #                                                CLM3D_MEASURE_SMALL)
+#   scripts/measure.sh track-speed [ARGS]        where clm3d track's time goes: model load, decode,
+#                                                detection, search, refinement, writing
+#                                                (docs/tracking.md; env CLM3D_MEASURE_VIDEO,
+#                                                CLM3D_MEASURE_MODEL)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 case "${1:-}" in
   boxes) target=clm3d_measure_box_calibration ;;
   expert-confidence) target=clm3d_measure_expert_confidence ;;
+  track-speed) target=clm3d_measure_track_speed ;;
   *)
-    echo "usage: $0 boxes|expert-confidence [GTEST_ARGS...]" >&2
+    echo "usage: $0 boxes|expert-confidence|track-speed [GTEST_ARGS...]" >&2
     exit 2
     ;;
 esac

@@ -77,6 +77,19 @@ FitState Fitter::meanState(const Pose& pose) const {
   return FitState{pose, Eigen::VectorXd::Zero(model_->shape.modeCount())};
 }
 
+const std::vector<Eigen::VectorXf>& Fitter::lastTemplates() const {
+  if (templatesPending_) {
+    // The problem is still configured at the last search's finest scale and view.
+    if (optimiser_->usesExperts()) problem_.synthesiseTemplates(templateParams_);
+    lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
+    for (int k = 0; k < problem_.landmarkCount(); ++k) {
+      lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);
+    }
+    templatesPending_ = false;
+  }
+  return lastTemplates_;
+}
+
 Eigen::Matrix2Xd Fitter::project(const FitState& state) const {
   return projectShape(model_->shape, camera_, state);
 }
@@ -115,6 +128,7 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
       (low - margin).x() > image.cols - 1 || (low - margin).y() > image.rows - 1) {
     throw InputError("fit: the start pose puts the face outside the image");
   }
+  templatesPending_ = false;  // the working image and problem are about to change
   makeWorkingImage(image, low - margin, high + margin, scale, scales_, working_);
 
   optimiser_->beginFit(p);
@@ -151,16 +165,16 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
   const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
   problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
-  problem_.synthesiseTemplates(p);
+  // The templates at the final estimate: the template optimisers' confidence matches them now;
+  // with experts they are only drawn, and lastTemplates() synthesises them if asked.
+  if (!optimiser_->usesExperts()) problem_.synthesiseTemplates(p);
   Eigen::VectorXd perLandmark(problem_.landmarkCount());
   result.confidence = optimiser_->usesExperts()
                           ? expertResponses(problem_.image(), problem_.projector(), finest.experts,
                                             finest.patchSize, p, perLandmark)
                           : problem_.landmarkNcc(p, perLandmark);
-  lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
-  for (int k = 0; k < problem_.landmarkCount(); ++k) {
-    lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);
-  }
+  templateParams_ = p;
+  templatesPending_ = true;
   lastTemplatePixel_ = 1.0 / working_.gain.mean();
 
   fromParams(p, state);

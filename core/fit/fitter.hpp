@@ -86,7 +86,9 @@ class Fitter {
   // The unmasked synthetic templates of the last search's finest scale, per landmark of the
   // final view (in `modelled` order), patchSize^2 values each in the model's normalised units,
   // and the working-image pixel size of one template pixel in input pixels (for drawing).
-  const std::vector<Eigen::VectorXf>& lastTemplates() const { return lastTemplates_; }
+  // Synthesised when first asked for after a search (only the overlay draws them; rlms's
+  // confidence does not need them), so a search that nobody draws does not pay for them.
+  const std::vector<Eigen::VectorXf>& lastTemplates() const;
   double lastTemplatePixelSize() const { return lastTemplatePixel_; }
 
   const ClmModel& model() const { return *model_; }
@@ -102,11 +104,13 @@ class Fitter {
   int scales_ = 1;
   ViewSelector selector_;
   std::unique_ptr<Optimiser> optimiser_;
-  SearchProblem problem_;
+  mutable SearchProblem problem_;  // lastTemplates() synthesises into it after a search
   WorkingImage working_;
   std::pair<int, int> eyes_;        // the scheme's normalisation pair
   double targetInterOcular_ = 0.0;  // pixels at the finest scale, as in training
-  std::vector<Eigen::VectorXf> lastTemplates_;
+  mutable std::vector<Eigen::VectorXf> lastTemplates_;
+  mutable bool templatesPending_ = false;  // lastTemplates_ is not yet the last search's
+  Eigen::VectorXd templateParams_;         // the last search's final parameters
   double lastTemplatePixel_ = 1.0;
 };
 

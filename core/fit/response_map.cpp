@@ -114,7 +114,9 @@ void expertScores(const cv::Mat& region, const PatchExpert& expert, int patchSiz
   scores.create(rows, cols, CV_32FC(units));
   auto* out = scores.ptr<float>(0);
   windowDots(region, expert.weights, patchSize, out);
-  const Eigen::VectorXf weightSums = expert.weights.colwise().sum().transpose();
+  thread_local Eigen::VectorXf weightSums;  // the same sums, into a buffer kept between calls
+  weightSums.resize(units);
+  weightSums.noalias() = expert.weights.colwise().sum().transpose();
   for (std::size_t w = 0; w < mean.size(); ++w, out += units) {
     if (!(variance[w] > 1e-12)) {
       std::fill(out, out + units, 0.0f);

@@ -1,6 +1,7 @@
 #include "core/track/track_request.hpp"
 
 #include <chrono>
+#include <future>
 #include <iomanip>
 #include <memory>
 #include <optional>
@@ -74,20 +75,33 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   if (faceByFace && !args.init.empty()) {
     throw InputError("--init starts one face's track: use it without --faces");
   }
+  // The first frame starts from a detection: the detector (its cascades and dlib's model, about
+  // 30 ms) is built on a thread of its own while the model loads. A detector that cannot be built
+  // throws from get() below, after the model's and the video's errors, as it did when built at
+  // the first frame.
+  std::future<std::unique_ptr<FaceDetector>> detector;
+  if (!faceByFace && args.init.empty()) {
+    detector = std::async(std::launch::async, [kind = args.tracker.detector] {
+      return std::make_unique<FaceDetector>(kind);
+    });
+  }
   const ClmModel model = loadModel(args.model);
   const Scheme scheme = model.scheme();
 
   std::optional<FitState> initial;
   std::unique_ptr<VideoWriter> overlay;
+  // Fails early, naming the file, if it is not a video; then tracked (one face) from its first
+  // frame, which opening decoded, rather than opened a second time.
+  std::optional<VideoReader> video(std::in_place, args.video);
   {
-    VideoReader probe(args.video);  // fails early, naming the file, if it is not a video
-    const Camera camera = Camera::fromVerticalFov(probe.width(), probe.height(), args.fovDeg);
+    const Camera camera = Camera::fromVerticalFov(video->width(), video->height(), args.fovDeg);
     if (!args.init.empty()) initial = stateFromPointsFile(model, camera, args.init);
     if (!args.overlay.empty()) {
-      overlay =
-          std::make_unique<VideoWriter>(args.overlay, probe.width(), probe.height(), probe.fps());
+      overlay = std::make_unique<VideoWriter>(args.overlay, video->width(), video->height(),
+                                              video->fps());
     }
   }
+  if (faceByFace) video.reset();  // trackVideoFaces opens its own
   const auto begin = std::chrono::steady_clock::now();
   std::size_t written = 0;  // rows streamed to the output so far
   const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
@@ -125,8 +139,8 @@ CommandReport run(const R& args, const ProgressCallback& progress,
         summary = trackVideoFaces(args.video, model, args.tracker, multiFaceSettings(args.tracker),
                                   onRow, perFrameFaces, progress, cancel);
       } else {
-        summary =
-            trackVideo(args.video, model, args.tracker, onRow, perFrame, progress, cancel, initial);
+        summary = trackVideo(*video, model, args.tracker, onRow, perFrame, progress, cancel,
+                             initial, detector.valid() ? detector.get() : nullptr);
       }
     } catch (const Cancelled&) {
       cancelled = true;

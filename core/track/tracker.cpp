@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <opencv2/imgproc.hpp>
 #include <utility>
 
 #include "core/common/error.hpp"
@@ -159,7 +160,23 @@ FitState Tracker::carriedState(const FitResult& fit) const {
   }
 }
 
-TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
+const cv::Mat& Tracker::greyOf(const cv::Mat& frame) {
+  if (frame.type() == CV_8UC3) {
+    cv::cvtColor(frame, grey_, cv::COLOR_BGR2GRAY);
+    return grey_;
+  }
+  if (frame.type() == CV_8UC4) {
+    cv::cvtColor(frame, grey_, cv::COLOR_BGRA2GRAY);
+    return grey_;
+  }
+  return frame;  // grey already, or a type the fitter refuses with its own message
+}
+
+TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
+  // Every search, refinement and detection of the frame reads grey levels: the frame is turned
+  // grey once here, into a buffer kept between frames, rather than each of them turning the part
+  // it cuts out grey (cv::cvtColor works pixel by pixel: the same grey levels).
+  const cv::Mat& frame = greyOf(input);
   TrackStep step;
   step.row.frame = index;
   step.row.timestamp = timestamp;
@@ -168,11 +185,18 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
   double searchMs = 0.0;  // every search of the frame, refinement included
   FitFinisher finish;
   if (settings_.refine && !model_->refiner.empty()) {
-    finish = [&](FitResult& fit) { refineFit(*model_, frame, fit); };
+    finish = [&](FitResult& fit) {
+      const auto begin = std::chrono::steady_clock::now();
+      refineFit(*model_, frame, fit);
+      step.refineMilliseconds +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+              .count();
+    };
   }
   const auto attempt = [&](const FitState& start, int view,
                            const StartSearchSettings* search = nullptr) {
     const auto begin = std::chrono::steady_clock::now();
+    ++step.searches;
     try {
       if (search != nullptr) {
         step.fit = fitFromBestStart(fitter_, *model_, frame, start, *search, nullptr, finish);
@@ -199,8 +223,9 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     if (step.fit && wantsViewSearch(*step.fit)) {
       const auto begin = std::chrono::steady_clock::now();
       const auto passes = [this](const FitResult& fit) { return judge(fit) == TrackFailure::None; };
-      step.fit = searchNeighbouringViews(fitter_, *model_, frame, *step.fit,
-                                         settings_.viewSearchMargin, finish, passes);
+      step.fit =
+          searchNeighbouringViews(fitter_, *model_, frame, *step.fit, settings_.viewSearchMargin,
+                                  finish, passes, &step.searches);
       step.failure = judge(*step.fit);
       searchMs +=
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
@@ -208,8 +233,11 @@ TrackStep Tracker::track(const cv::Mat& frame, int index, double timestamp) {
     }
   }
   if (!fromPrevious || step.failure != TrackFailure::None) {
+    const auto begin = std::chrono::steady_clock::now();
     std::vector<FaceBox> faces = faceSource_ ? faceSource_(frame) : detector().detect(frame);
     if (lastFace_) faces = preferFacesAt(std::move(faces), *lastFace_);
+    step.detectMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     if (!faces.empty()) {
       step.detected = true;
       // The next face while the fit fails (TrackerSettings::facesTried); the last one's stands.
@@ -409,9 +437,17 @@ TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& mode
                         const PerFrame& perFrame, const ProgressCallback& progress,
                         const CancelToken* cancel, std::optional<FitState> initial) {
   VideoReader reader(video);
+  return trackVideo(reader, model, settings, onRow, perFrame, progress, cancel, std::move(initial));
+}
+
+TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const TrackerSettings& settings,
+                        const TrackRowSink& onRow, const PerFrame& perFrame,
+                        const ProgressCallback& progress, const CancelToken* cancel,
+                        std::optional<FitState> initial, std::unique_ptr<FaceDetector> detector) {
   const Camera camera =
       Camera::fromVerticalFov(reader.width(), reader.height(), kDefaultVerticalFovDeg);
   Tracker tracker(model, camera, settings);
+  if (detector) tracker.setDetector(std::move(detector));
   if (initial) tracker.setState(*initial);
   return trackRemainingFrames(reader, tracker, onRow, reader.frameCount(), "tracking", perFrame,
                               progress, cancel);

@@ -154,8 +154,11 @@ struct TrackStep {
   TrackRow row;
   std::optional<FitResult> fit;  // absent when no face was found
   TrackFailure failure = TrackFailure::None;
-  bool detected = false;         // this frame started from a detection
-  double fitMilliseconds = 0.0;  // all searches of the frame (no detection, no decoding)
+  bool detected = false;            // this frame started from a detection
+  double fitMilliseconds = 0.0;     // all searches of the frame (no detection, no decoding)
+  double refineMilliseconds = 0.0;  // of fitMilliseconds: the point refinement and its check
+  double detectMilliseconds = 0.0;  // the face detection (not in fitMilliseconds)
+  int searches = 0;                 // Fitter::fit runs (a detection's start grid counts as one)
 };
 
 class Tracker {
@@ -183,6 +186,9 @@ class Tracker {
   // faces no other face's tracker holds. The source must outlive the tracker's use of it.
   using FaceSource = std::function<std::vector<FaceBox>(const cv::Mat& frame)>;
   void setFaceSource(FaceSource source) { faceSource_ = std::move(source); }
+  // The detector a frame that needs a detection (and has no face source) uses. Unset: one of
+  // settings.detector built when first needed. clm3d track builds it beside the model's loading.
+  void setDetector(std::unique_ptr<FaceDetector> detector) { detector_ = std::move(detector); }
 
   Fitter& fitter() { return fitter_; }
   const TrackerSettings& settings() const { return settings_; }
@@ -202,6 +208,8 @@ class Tracker {
   // Whether a frame's fit is also searched from the neighbouring views.
   bool wantsViewSearch(const FitResult& fit) const;
   FaceDetector& detector();
+  // The frame in grey (8-bit BGR and BGRA converted into grey_; any other type as it is).
+  const cv::Mat& greyOf(const cv::Mat& frame);
   void lose();  // the next frame starts from a detection (preferring the face last tracked)
 
   const ClmModel* model_;
@@ -219,6 +227,7 @@ class Tracker {
   std::optional<cv::Point2d> lastFace_;
   PointSmoother smoother_;
   std::pair<int, int> eyes_;  // the scheme's normalisation pair (parsed once)
+  cv::Mat grey_;              // the frame being tracked, in grey (greyOf)
 };
 
 struct TrackSummary {
@@ -297,5 +306,13 @@ TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& mode
                         const PerFrame& perFrame = {}, const ProgressCallback& progress = {},
                         const CancelToken* cancel = nullptr,
                         std::optional<FitState> initial = std::nullopt);
+// The same from a reader opened by the caller (the frames it has left: all of a fresh one), with
+// the tracker's detector when given (Tracker::setDetector), so that a caller that opened the video
+// to look at it first does not open it again.
+TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const TrackerSettings& settings,
+                        const TrackRowSink& onRow, const PerFrame& perFrame,
+                        const ProgressCallback& progress, const CancelToken* cancel,
+                        std::optional<FitState> initial,
+                        std::unique_ptr<FaceDetector> detector = nullptr);
 
 }  // namespace clm3d

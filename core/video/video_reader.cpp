@@ -77,7 +77,13 @@ struct VideoReader::Impl {
     capture.release();
     // Exceptions from OpenCV (a corrupt file can make a backend throw) become InputErrors.
     try {
-      capture.open(path.string(), cv::CAP_FFMPEG);
+      // Software decoding, asked for: left to choose, OpenCV's FFmpeg backend first tries the
+      // hardware decoders (VA-API and others), which on a machine without one cost 40-110 ms of
+      // every open for nothing (docs/video.md); and where one exists its frames could differ
+      // from the software decoder's, so the same video would track differently from machine to
+      // machine.
+      capture.open(path.string(), cv::CAP_FFMPEG,
+                   {cv::CAP_PROP_HW_ACCELERATION, cv::VIDEO_ACCELERATION_NONE});
     } catch (const cv::Exception& e) {
       throwInputError(path, std::string("cannot be read as a video (") + e.what() + ")");
     }

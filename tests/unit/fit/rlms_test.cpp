@@ -119,6 +119,49 @@ TEST(RlmsOptimiser, ConfidenceRejectsADisplacedFit) {
   EXPECT_LT(wrong.confidence, 0.5 * right.confidence);
 }
 
+// rlms's confidence needs no synthetic templates, so the fitter makes them when the overlay first
+// asks (Fitter::lastTemplates): they are the last search's, whether asked for after every search
+// or only after the last, as a fitter that made only that search gives.
+TEST(RlmsOptimiser, LastTemplatesAreTheLastSearchsWheneverAskedFor) {
+  const ClmModel& model = fitTestModel();
+  const test::FitScene scene = makeFitScene(model, 0.0, 0.0);
+  FitSettings settings;
+  settings.optimiser = "rlms";
+  const double off = scene.interOcular / 4.0;
+  const FitState first = test::perturbState(scene, model, off, -off / 2, 0.0, 1.0, 0.0);
+  const FitState second = test::perturbState(scene, model, -off, off / 3, 0.0, 1.0, 0.0);
+
+  Fitter alone(model, scene.camera, settings);
+  const FitResult fit = alone.fit(scene.image, second);
+  const std::vector<Eigen::VectorXf> expected = alone.lastTemplates();
+  ASSERT_EQ(expected.size(),
+            model.views[static_cast<std::size_t>(fit.view)].scales[0].landmarks.size());
+  EXPECT_TRUE(expected.front().allFinite());
+  EXPECT_GT(expected.front().norm(), 0.0f);
+
+  Fitter askedEveryTime(model, scene.camera, settings);
+  (void)askedEveryTime.fit(scene.image, first);
+  const std::vector<Eigen::VectorXf> ofFirst = askedEveryTime.lastTemplates();
+  (void)askedEveryTime.fit(scene.image, second);
+  Fitter askedAtTheEnd(model, scene.camera, settings);
+  (void)askedAtTheEnd.fit(scene.image, first);
+  (void)askedAtTheEnd.fit(scene.image, second);
+  for (const Fitter* fitter : {&askedEveryTime, &askedAtTheEnd}) {
+    const std::vector<Eigen::VectorXf>& templates = fitter->lastTemplates();
+    ASSERT_EQ(templates.size(), expected.size());
+    for (std::size_t k = 0; k < templates.size(); ++k) EXPECT_EQ(templates[k], expected[k]);
+  }
+  // A start that leaves the image changes nothing: the templates stay the last search's.
+  FitState outside = second;
+  outside.pose.translation.x() += 1e4;
+  EXPECT_THROW((void)askedAtTheEnd.fit(scene.image, outside), InputError);
+  EXPECT_EQ(askedAtTheEnd.lastTemplates().front(), expected.front());
+  bool differs = false;
+  for (std::size_t k = 0; k < ofFirst.size() && k < expected.size(); ++k)
+    differs = differs || ofFirst[k] != expected[k];
+  EXPECT_TRUE(differs) << "the two searches should end apart for this test to mean something";
+}
+
 TEST(RlmsOptimiser, ModelWithoutExpertsIsRefused) {
   ClmModel model = fitTestModel();
   for (ViewModel& view : model.views) {

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <iostream>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -14,8 +16,11 @@
 #include "core/eval/landmark_error.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/track/fit_overlay.hpp"
+#include "core/video/video_reader.hpp"
+#include "core/video/video_writer.hpp"
 #include "tests/support/calibrated_fixture.hpp"
 #include "tests/support/fit_fixture.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace clm3d {
 namespace {
@@ -176,6 +181,55 @@ TEST(Tracker, ABlankFrameFailsAndTheFaceIsFoundAgain) {
   ASSERT_TRUE(found.fit.has_value());
   EXPECT_TRUE(found.row.success) << toString(found.failure);
   EXPECT_LT(test::meanPointError(found.row.points, scene.truthPoints), 0.1 * scene.interOcular);
+}
+
+// clm3d track opens the video once (to check it) and tracks that reader with a detector built
+// while the model loaded: the rows are those of tracking the file by name, and each step says
+// what its time went on (searches, refinement within them, the detection apart).
+TEST(Tracker, AnOpenedReaderWithAGivenDetectorTracksAsTheFileDoes) {
+  const ClmModel& model = test::fitTestModel();
+  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
+  SequenceSettings settings = shortSequence(10.0);
+  settings.interOcularPixels = 70.0;
+  SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), settings);
+  const test::TempDir dir;
+  const std::filesystem::path file = dir / "turn.avi";
+  {
+    VideoWriter writer(file, settings.width, settings.height, 30.0);
+    for (int i = 0; i < sequence.frameCount(); ++i) writer.write(sequence.render(i).bgr);
+    writer.close();
+  }
+  TrackTable byName;
+  std::vector<TrackStep> steps;
+  const TrackSummary named =
+      trackVideo(file, model, TrackerSettings{}, byName,
+                 [&](const cv::Mat&, const TrackStep& step, Tracker&) { steps.push_back(step); });
+  std::vector<TrackRow> fromReader;
+  VideoReader reader(file);
+  const TrackSummary opened = trackVideo(
+      reader, model, TrackerSettings{}, [&](TrackRow&& row) { fromReader.push_back(row); }, {}, {},
+      nullptr, std::nullopt, std::make_unique<FaceDetector>(TrackerSettings{}.detector));
+  ASSERT_EQ(named.frames, sequence.frameCount());
+  EXPECT_EQ(opened.frames, named.frames);
+  EXPECT_EQ(opened.succeeded, named.succeeded);
+  EXPECT_EQ(opened.detections, named.detections);
+  ASSERT_EQ(fromReader.size(), byName.rows.size());
+  for (std::size_t f = 0; f < fromReader.size(); ++f) {
+    EXPECT_EQ(fromReader[f].success, byName.rows[f].success) << "frame " << f;
+    EXPECT_EQ(fromReader[f].points, byName.rows[f].points) << "frame " << f;
+    EXPECT_EQ(fromReader[f].confidence, byName.rows[f].confidence) << "frame " << f;
+  }
+  ASSERT_EQ(steps.size(), byName.rows.size());
+  EXPECT_TRUE(steps.front().detected);
+  EXPECT_GT(steps.front().detectMilliseconds, 0.0);
+  EXPECT_EQ(named.succeeded, sequence.frameCount());
+  for (const TrackStep& step : steps) {
+    EXPECT_GE(step.searches, 1);
+    EXPECT_GE(step.fitMilliseconds, step.refineMilliseconds);
+    if (!step.detected) {
+      EXPECT_EQ(step.detectMilliseconds, 0.0);
+    }
+  }
 }
 
 // rlms tracking judges the experts' confidence on its own scale: the frames of a turning head are
