@@ -17,6 +17,7 @@
 #include "core/detect/start_search.hpp"
 #include "core/refine/descent_refinement.hpp"
 #include "core/refine/refined_fit.hpp"
+#include "core/refine/view_check.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/batch_fit.hpp"
 #include "core/track/tracker.hpp"
@@ -458,8 +459,9 @@ TEST(ImageFitRefiner, AFitTheCheckDoubtsIsSearchedAgainFromRescaledStarts) {
 
 // In a view the point refiner did not learn (ViewModel::refined false: profiles, for a refiner
 // learnt from near-frontal photos) a fit keeps the search's points and is judged on its view's
-// calibrated probability; in a view it learnt, the points are refined and checked as before.
-TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndItsCalibration) {
+// probability (its check's, else its calibration's); in a view it learnt, the points are refined
+// and checked as before.
+TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndIsJudgedOnItsView) {
   ClmModel model = test::calibratedFitTestModel().model;
   model.refiner = test::photoRefiner();
   for (ViewModel& view : model.views) view.refined = view.yawDeg == 0.0;
@@ -471,7 +473,11 @@ TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndItsCalib
   FitResult finished = searched;
   refineFit(model, side.image, finished);
   EXPECT_EQ(finished.points, searched.points);
-  EXPECT_EQ(finished.confidence, searched.viewProbability);
+  // The fixture's views have checks: the view's probability is its check's, and it judges.
+  const double checked = viewCheckProbability(model, searched.view, side.image, searched.points);
+  ASSERT_TRUE(std::isfinite(checked));
+  EXPECT_EQ(finished.viewProbability, checked);
+  EXPECT_EQ(finished.confidence, checked);
   EXPECT_EQ(finished.searchConfidence, searched.confidence);
 
   const FitScene front = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
