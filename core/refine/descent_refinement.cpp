@@ -85,16 +85,12 @@ Eigen::Matrix2Xd DescentRegion::toImage(const Eigen::Matrix2Xd& region) const {
   return (region / scale).colwise() + offset;
 }
 
-DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,
-                            int rightEye) {
+DescentRegion greyRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, double margin,
+                         double scale) {
   if (image.empty()) throw InputError("refine: the image is empty");
-  const double eyeDistance = (points.col(leftEye) - points.col(rightEye)).norm();
-  if (!(eyeDistance > 0.0) || !points.allFinite())
-    throw InputError("refine: the points' eyes coincide or are not finite");
   const int type = image.type();
   if (type != CV_8UC1 && type != CV_8UC3 && type != CV_8UC4 && type != CV_32FC1)
     throw InputError("refine: unsupported image type (need 8-bit grey, BGR or BGRA, or float)");
-  const double margin = kRegionMargin * eyeDistance;
   const Eigen::Vector2d low = points.rowwise().minCoeff().array() - margin;
   const Eigen::Vector2d high = points.rowwise().maxCoeff().array() + margin;
   const auto clampTo = [](double v, int lo, int hi) {
@@ -112,7 +108,6 @@ DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points
   } else if (type == CV_8UC4) {
     cv::cvtColor(part, roi, cv::COLOR_BGRA2GRAY);
   }
-  const double scale = kDescentEyeDistance / eyeDistance;
   const int width = std::max(1, static_cast<int>(std::lround(roi.cols * scale)));
   const int height = std::max(1, static_cast<int>(std::lround(roi.rows * scale)));
   cv::Mat resized;
@@ -124,6 +119,15 @@ DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points
   region.scale = static_cast<double>(width) / roi.cols;
   region.offset = Eigen::Vector2d(x0, y0);
   return region;
+}
+
+DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,
+                            int rightEye) {
+  if (image.empty()) throw InputError("refine: the image is empty");
+  const double eyeDistance = (points.col(leftEye) - points.col(rightEye)).norm();
+  if (!(eyeDistance > 0.0) || !points.allFinite())
+    throw InputError("refine: the points' eyes coincide or are not finite");
+  return greyRegion(image, points, kRegionMargin * eyeDistance, kDescentEyeDistance / eyeDistance);
 }
 
 Eigen::Matrix2Xd refineInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,

@@ -32,6 +32,12 @@ struct DescentRegion {
 };
 inline constexpr double kDescentEyeDistance = 40.0;
 
+// The part of `image` (CV_8UC1/3/4 or CV_32FC1) within `margin` pixels of `points`' box (2 x N,
+// finite), in grey, scaled by about `scale` (the exact factor in the result). InputError for an
+// empty image or an unsupported type. The refiner's regions and the views' checks cut by it.
+DescentRegion greyRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, double margin,
+                         double scale);
+
 // The region of `image` (CV_8UC1/3/4 or CV_32FC1) around `points` (2 x N, finite) whose columns
 // leftEye and rightEye are the eye centres. InputError for an empty image or coinciding eyes.
 DescentRegion descentRegion(const cv::Mat& image, const Eigen::Matrix2Xd& points, int leftEye,

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
+#include <optional>
 
 #include "core/common/error.hpp"
 #include "core/geometry/camera.hpp"
@@ -11,6 +12,7 @@
 #include "core/geometry/similarity2.hpp"
 #include "core/refine/descent_check.hpp"
 #include "core/refine/descent_features.hpp"
+#include "core/refine/descent_refinement.hpp"
 
 namespace clm3d {
 
@@ -56,44 +58,20 @@ Eigen::VectorXf viewCheckFeatures(const ClmModel& model, int view, const ViewChe
   // A mirrored view's fit read as its mirror image: landmark i of the source is the fit's
   // mirrorOf(i), and x is flipped below with the crop.
   Eigen::Matrix2Xd read(2, k);
+  std::optional<Scheme> scheme;  // parsed from the model's JSON: once, and only when mirrored
+  if (v.mirrored) scheme = model.scheme();
   for (Eigen::Index j = 0; j < k; ++j) {
     const int landmark = check.landmarks[static_cast<std::size_t>(j)];
-    read.col(j) = points.col(v.mirrored ? model.scheme().mirrorOf(landmark) : landmark);
+    read.col(j) = points.col(scheme ? scheme->mirrorOf(landmark) : landmark);
   }
   const double size = boxSize(read);
   if (k == 0 || !read.allFinite() || !(size > 1.0) || image.empty()) return {};
   // The crop: the points' box with a window and a half around it, at kViewCheckFacePixels.
-  const double margin = 1.5 * kViewCheckWindow * size;
-  const Eigen::Vector2d low = read.rowwise().minCoeff().array() - margin;
-  const Eigen::Vector2d high = read.rowwise().maxCoeff().array() + margin;
-  const auto clampTo = [](double value, int lo, int hi) {
-    return static_cast<int>(std::clamp(value, static_cast<double>(lo), static_cast<double>(hi)));
-  };
-  const int x0 = clampTo(std::floor(low.x()), 0, image.cols - 1);
-  const int y0 = clampTo(std::floor(low.y()), 0, image.rows - 1);
-  const int x1 = clampTo(std::ceil(high.x()) + 1, x0 + 1, image.cols);
-  const int y1 = clampTo(std::ceil(high.y()) + 1, y0 + 1, image.rows);
-  cv::Mat part = image(cv::Rect(x0, y0, x1 - x0, y1 - y0));
-  if (part.type() == CV_8UC3) {
-    cv::cvtColor(part, part, cv::COLOR_BGR2GRAY);
-  } else if (part.type() == CV_8UC4) {
-    cv::cvtColor(part, part, cv::COLOR_BGRA2GRAY);
-  } else if (part.type() != CV_8UC1 && part.type() != CV_32FC1) {
-    throw InputError("view check: unsupported image type (need 8-bit grey, BGR or BGRA, or float)");
-  }
-  const double scale = kViewCheckFacePixels / size;
-  const int width = std::max(1, static_cast<int>(std::lround(part.cols * scale)));
-  const int height = std::max(1, static_cast<int>(std::lround(part.rows * scale)));
-  cv::Mat resized;
-  cv::resize(part, resized, cv::Size(width, height), 0, 0,
-             scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
-  cv::Mat grey;
-  resized.convertTo(grey, CV_32F, part.depth() == CV_8U ? 1.0 / 255.0 : 1.0);
-  Eigen::Matrix2Xd inCrop(2, k);
-  for (Eigen::Index j = 0; j < k; ++j) {
-    inCrop.col(j) =
-        (read.col(j) - Eigen::Vector2d(x0, y0)) * (static_cast<double>(width) / part.cols);
-  }
+  DescentRegion region =
+      greyRegion(image, read, 1.5 * check.classifier.window * size, kViewCheckFacePixels / size);
+  cv::Mat& grey = region.grey;
+  Eigen::Matrix2Xd inCrop = region.toRegion(read);
+  const int width = grey.cols;
   if (v.mirrored) {
     cv::flip(grey, grey, 1);
     inCrop.row(0) = (width - 1.0) - inCrop.row(0).array();
