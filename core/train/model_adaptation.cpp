@@ -49,9 +49,10 @@ TrainSettings adaptationTrainSettings(const ClmModel& model, const AdaptSettings
     return it != object.end() && it->is_number() ? it->get<double>() : fallback;
   };
   if (experts) {
-    settings.expertRadius = 6;
+    settings.expertRadius = TrainSettings{}.expertRadius;  // the trainer's default
     if (stored.is_object() && stored.contains("experts") && stored["experts"].is_object()) {
-      settings.expertRadius = static_cast<int>(number(stored["experts"], "radius", 6));
+      settings.expertRadius =
+          static_cast<int>(number(stored["experts"], "radius", settings.expertRadius));
     }
   }
   if (stored.is_object() && stored.contains("perturbation") && stored["perturbation"].is_object()) {
