@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addTruthCommand(app);
   clm3d::cli::addReviewCommand(app);
   clm3d::cli::addAdaptCommand(app);
+  clm3d::cli::addCorrectionBenchCommand(app);
   clm3d::cli::addFramesCommand(app);
   clm3d::cli::addIctTextureCommand(app);
   clm3d::cli::addEvalPointsCommand(app);

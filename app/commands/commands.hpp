@@ -19,6 +19,7 @@ void addTrackCommand(CLI::App& root);
 void addTruthCommand(CLI::App& root);
 void addReviewCommand(CLI::App& root);
 void addAdaptCommand(CLI::App& root);
+void addCorrectionBenchCommand(CLI::App& root);
 void addFramesCommand(CLI::App& root);
 void addIctTextureCommand(CLI::App& root);
 void addEvalPointsCommand(CLI::App& root);

@@ -5,10 +5,9 @@
 
 #include <string>
 
-#include "core/eval/synthetic_sequence.hpp"
 #include "core/model/model_file.hpp"
 #include "core/track/ground_truth.hpp"
-#include "tests/support/fit_fixture.hpp"
+#include "tests/support/held_out_sequence.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -25,21 +24,13 @@ struct AdaptInputs {
 };
 
 AdaptInputs writeAdaptInputs(const std::filesystem::path& folder) {
-  SequenceSettings settings;
-  settings.yawToDeg = 6.0;
-  settings.width = 320;
-  settings.height = 240;
-  settings.interOcularPixels = 56.0;
-  settings.supersample = 1;
-  const SequenceFiles files = SequenceFiles::inFolder(folder);
-  const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
-  const SequenceSummary written =
-      writeSyntheticSequence(head.mesh, head.landmarks, Scheme::thesis25(), settings, {}, files);
-  AdaptInputs inputs{folder / "general.clm3d", files.video, folder / "gt.csv", written.truth};
+  const test::HeldOutSequence written = test::writeHeldOutSequence(folder, 6.0);
+  AdaptInputs inputs{folder / "general.clm3d", written.files.video, folder / "gt.csv",
+                     written.summary.truth};
   saveModel(test::fitTestModel(), inputs.model);
-  GroundTruthSet truth = GroundTruthSet::fromTrack(written.truth, written.frames);
-  truth.setKeyframe(2, written.truth.rows[2].points);
-  truth.setKeyframe(5, written.truth.rows[5].points);
+  GroundTruthSet truth = GroundTruthSet::fromTrack(written.summary.truth, written.summary.frames);
+  truth.setKeyframe(2, written.summary.truth.rows[2].points);
+  truth.setKeyframe(5, written.summary.truth.rows[5].points);
   saveGroundTruth(inputs.truth, truth);
   return inputs;
 }
