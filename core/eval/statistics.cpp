@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/common/median.hpp"
 #include "core/common/number_text.hpp"
 
 namespace clm3d {
@@ -70,12 +71,10 @@ Descriptive describe(std::span<const double> values) {
   }
   result.mean = meanOf(values);
   result.sd = std::sqrt(sampleVariance(values, result.mean));
-  std::vector<double> sorted(values.begin(), values.end());
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t half = sorted.size() / 2;
-  result.median = sorted.size() % 2 == 1 ? sorted[half] : 0.5 * (sorted[half - 1] + sorted[half]);
-  result.min = sorted.front();
-  result.max = sorted.back();
+  result.median = medianOf(std::vector<double>(values.begin(), values.end()));
+  const auto [min, max] = std::minmax_element(values.begin(), values.end());
+  result.min = *min;
+  result.max = *max;
   return result;
 }
 

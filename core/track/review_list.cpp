@@ -8,6 +8,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/common/median.hpp"
 #include "core/track/ground_truth.hpp"
 
 namespace clm3d {
@@ -30,14 +31,6 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 bool reviewHasPoint(const Eigen::Matrix2Xd& points, int i) {
   return i < points.cols() && std::isfinite(points(0, i)) && std::isfinite(points(1, i));
-}
-
-double medianOf(std::vector<double>& values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  if (values.size() % 2 == 1) return *middle;
-  const double upper = *middle;
-  return 0.5 * (upper + *std::max_element(values.begin(), middle));
 }
 
 std::string reviewNumber(double value) {

@@ -126,6 +126,13 @@ TEST(BatchFitCli, ListFileWithCommentsRelativePathsAndStartPoints) {
   ASSERT_GE(values.size(), 9U) << rows[1];
   EXPECT_FALSE(values[2].empty()) << rows[1];  // fit_ms
   EXPECT_TRUE(values[3].empty()) << rows[1];   // detect_ms
+  // The summary line gives the median of the ok rows' fit_ms (of two: their mean), to 0.1 ms.
+  const auto fitMs = [&](const std::string& row) {
+    return std::stod(row.substr(row.find(",ok,") + 4));
+  };
+  const double median = 0.5 * (fitMs(rows[1]) + fitMs(rows[2]));
+  const std::string printed = result.output.substr(result.output.find("fit median ") + 11);
+  EXPECT_NEAR(std::stod(printed), median, 0.051) << result.output;
   EXPECT_LT(errorOf(out / "a-turned.pts", f.turned), 0.08);
   EXPECT_LT(errorOf(out / "b-frontal.pts", f.frontal), 0.08);
 }
