@@ -37,6 +37,10 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
   const int steps = std::max(0, settings.steps);
   FitResult best = search(start);
   int count = 1;
+  if (settings.onlyBelow > 0.0 && best.confidence >= settings.onlyBelow) {
+    if (searches != nullptr) *searches = count;
+    return best;
+  }
   for (int dy = -steps; dy <= steps; ++dy) {
     for (int dx = -steps; dx <= steps; ++dx) {
       for (const double size : sizes) {

@@ -26,6 +26,10 @@ struct StartSearchSettings {
   // Each shifted start is also searched at these relative sizes (1 = as placed), e.g. {0.9, 1.1}.
   // Empty: the placed size only.
   std::vector<double> sizes;
+  // The rest of the grid is searched only when the fit from the start itself has a confidence
+  // below this: a fit the point check already trusts is not searched eight more times. 0 = the
+  // whole grid always.
+  double onlyBelow = 0.0;
 
   bool operator==(const StartSearchSettings&) const = default;
 };
@@ -39,10 +43,10 @@ FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState star
 // check's probability is then the confidence compared). Empty: nothing.
 using FitFinisher = std::function<void(FitResult&)>;
 
-// Searches `image` from `start` and from every start of the grid, finishes every fit with
-// `finish`, and returns the one with the highest confidence (the first on ties, so steps 0 with no
-// sizes is fitter.fit(image, start) finished). `searches`, when given, receives the number of
-// searches made.
+// Searches `image` from `start` and, unless that fit's confidence reaches settings.onlyBelow, from
+// every start of the grid, finishes every fit with `finish`, and returns the one with the highest
+// confidence (the first on ties, so steps 0 with no sizes is fitter.fit(image, start) finished).
+// `searches`, when given, receives the number of searches made.
 FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                            const FitState& start, const StartSearchSettings& settings,
                            int* searches = nullptr, const FitFinisher& finish = {});

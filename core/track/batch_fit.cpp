@@ -71,6 +71,7 @@ ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double vertica
   settings.widerSearch = tracker.widerSearch;
   settings.refineRuns = tracker.refineRuns;
   settings.refineSpread = tracker.refineSpread;
+  settings.refineRunsBelow = tracker.refineRunsBelow;
   return settings;
 }
 
@@ -195,7 +196,9 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
                        placed(stateFromPointsFile(*model_, fitter.camera(), startPoints)));
       if (finish) finish(fit);
     }
-    if (settings_.refine && settings_.refineRuns > 1 && !model_->refiner.empty()) {
+    const bool doubted =
+        settings_.refineRunsBelow <= 0.0 || fit.confidence < settings_.refineRunsBelow;
+    if (settings_.refine && settings_.refineRuns > 1 && !model_->refiner.empty() && doubted) {
       // The starts were compared by a refinement from one start each; the kept fit's points are
       // refined again from the search's own, now from several starts.
       fit.points = fitter.project(fit.state);

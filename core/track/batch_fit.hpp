@@ -62,10 +62,11 @@ struct ImageFitSettings {
   double viewSearchProbability = TrackerSettings{}.viewSearchProbability;
   double viewSearchMargin = TrackerSettings{}.viewSearchMargin;
   StartSearchSettings widerSearch = TrackerSettings{}.widerSearch;
-  // Runs of the refiner averaged for the kept fit, and their spread (TrackerSettings::refineRuns,
-  // refineSpread).
+  // Runs of the refiner averaged for the kept fit, their spread, and the check probability below
+  // which they are made (TrackerSettings::refineRuns, refineSpread, refineRunsBelow).
   int refineRuns = TrackerSettings{}.refineRuns;
   double refineSpread = TrackerSettings{}.refineSpread;
+  double refineRunsBelow = TrackerSettings{}.refineRunsBelow;
 
   bool operator==(const ImageFitSettings&) const = default;
 };

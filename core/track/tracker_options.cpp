@@ -122,6 +122,12 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(real("start-shift", "Start grid spacing", "Search", search, 0.01, 0.5, 2,
                          "spacing of that grid in eye distances of the placed start",
                          [](S& s) -> double& { return s.startSearch.shift; }));
+  options.push_back(real("start-grid-below", "Start grid below (confidence)", "Search", search, 0.0,
+                         1.0, 5,
+                         "the rest of that grid is searched only when the fit from the "
+                         "detector's start has a confidence below this (the point check's "
+                         "probability for a model trained with photos); 0 = the whole grid always",
+                         [](S& s) -> double& { return s.startSearch.onlyBelow; }));
   options.push_back(integer("faces-tried", "Faces tried", "Search", search, 1, 20,
                             "detected faces searched, best first, until one's fit does not fail "
                             "(clm3d fit: until one passes the point refiner's check, the most "
@@ -164,6 +170,11 @@ std::vector<TrackerOption> buildOptions() {
                             "copies of them moved --refine-spread around (1 = from the fit's "
                             "points alone)",
                             [](S& s) -> int& { return s.refineRuns; }));
+  options.push_back(real("refine-runs-below", "Refiner runs below (check)", "Search", photo, 0.0,
+                         1.0, 5,
+                         "those runs are made only when the kept fit's check probability is "
+                         "below this (0 = always)",
+                         [](S& s) -> double& { return s.refineRunsBelow; }));
   options.push_back(real("refine-spread", "Refiner runs' spread", "Search", photo, 0.0, 0.5, 3,
                          "how far those copies are moved, in eye distances",
                          [](S& s) -> double& { return s.refineSpread; }));

@@ -1,6 +1,7 @@
 // fitFromBestStart: a start outside the search's capture range is recovered by the grid of moved
 // starts (one of which lands near the face), the most confident fit is the one returned, and with
-// no grid it is the plain search.
+// no grid it is the plain search; with a threshold, the grid runs only when the start's own fit
+// is below it.
 #include "core/detect/start_search.hpp"
 
 #include <gtest/gtest.h>
@@ -48,6 +49,30 @@ TEST(StartSearch, TheGridRecoversAStartOutsideTheCaptureRange) {
   EXPECT_GE(searched.confidence, alone.confidence);
   EXPECT_LT(errorOf(searched, scene), 0.1) << "from the far start alone: " << errorOf(alone, scene);
   EXPECT_LT(errorOf(searched, scene), 0.5 * errorOf(alone, scene));
+}
+
+TEST(StartSearch, TheGridRunsOnlyWhenTheStartsFitIsBelowTheThreshold) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
+  Fitter fitter(model, scene.camera);
+  const FitState far = shiftedStart(model, fitter, scene.truth, Eigen::Vector2d(0.6, 0.0));
+  const FitResult fromTruth = fitter.fit(scene.image, scene.truth);
+  const FitResult fromFar = fitter.fit(scene.image, far);
+  ASSERT_GT(fromTruth.confidence, fromFar.confidence);
+  StartSearchSettings grid;
+  grid.steps = 1;
+  grid.shift = 0.6;
+  grid.onlyBelow = 0.5 * (fromTruth.confidence + fromFar.confidence);
+
+  int searches = 0;
+  const FitResult trusted =
+      fitFromBestStart(fitter, model, scene.image, scene.truth, grid, &searches);
+  EXPECT_EQ(searches, 1);
+  EXPECT_EQ(trusted.confidence, fromTruth.confidence);
+
+  const FitResult doubted = fitFromBestStart(fitter, model, scene.image, far, grid, &searches);
+  EXPECT_EQ(searches, 10);
+  EXPECT_LT(errorOf(doubted, scene), 0.5 * errorOf(fromFar, scene));
 }
 
 TEST(TiltAngles, NearestTurnsFirstBothWays) {

@@ -180,6 +180,39 @@ TEST(ImageFitRefiner, RefiningFromMoreStartsChangesTheTrainedRefinersPoints) {
   EXPECT_LT(meanPointError(several.fit->points, scene.truthPoints) / scene.interOcular, 0.1);
 }
 
+// The extra runs are made only for a fit whose check probability is below refineRunsBelow: just
+// above the one-run fit's probability they run, at half of it they do not.
+TEST(ImageFitRefiner, TheExtraRunsAreMadeOnlyForAFitTheCheckDoubts) {
+  ClmModel model = fitTestModel();
+  model.refiner = test::photoRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 4.0, kHeldOutHead);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  const auto fitWith = [&](int runs, double below) {
+    ImageFitSettings settings;
+    settings.refineRuns = runs;
+    settings.refineRunsBelow = below;
+    ImageFitOutcome outcome =
+        ImageFitter(model, settings).fitFile(dir / "face.png", dir / "face.pts");
+    EXPECT_EQ(outcome.status, ImageFitStatus::Ok) << outcome.message;
+    return outcome;
+  };
+  const ImageFitOutcome single = fitWith(1, 0.0);
+  const ImageFitOutcome always = fitWith(9, 0.0);
+  ASSERT_TRUE(single.fit && always.fit);
+  const double probability = single.fit->confidence;
+  ASSERT_GT(probability, 0.0);
+  ASSERT_LT(probability, 1.0);
+  ASSERT_GT((single.fit->points - always.fit->points).cwiseAbs().maxCoeff(), 1e-3);
+
+  const ImageFitOutcome trusted = fitWith(9, 0.5 * probability);
+  ASSERT_TRUE(trusted.fit);
+  EXPECT_LT((trusted.fit->points - single.fit->points).cwiseAbs().maxCoeff(), 1e-9);
+  const ImageFitOutcome doubted = fitWith(9, std::nextafter(probability, 1.0));
+  ASSERT_TRUE(doubted.fit);
+  EXPECT_LT((doubted.fit->points - always.fit->points).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
   ClmModel model = fitTestModel();
   model.refiner = knownRefiner();
