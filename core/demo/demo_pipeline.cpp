@@ -193,7 +193,7 @@ TrackSummary trackWithOverlay(const fs::path& video, const ClmModel& model,
       trackVideo(video, model, settings, tracks,
                  [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
                    cv::Mat drawn = frame.clone();
-                   drawFitOverlay(drawn, step, tracker.fitter(), scheme);
+                   drawFitOverlay(drawn, frame, step, tracker.fitter(), scheme);
                    writer.write(drawn);
                  });
   writer.close();

@@ -54,13 +54,6 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
       }
     }
   }
-  if (count > 1) {
-    // The fitter keeps the last search's templates (the overlay draws them): search once more from
-    // the best result, and keep that unless it is worse.
-    FitResult again = search(best.state);
-    ++count;
-    if (again.confidence >= best.confidence) best = std::move(again);
-  }
   if (searches != nullptr) *searches = count;
   return best;
 }
@@ -71,7 +64,6 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
   const std::size_t count =
       std::min(faces.size(), static_cast<std::size_t>(std::max(1, search.maxFaces)));
   FitResult best;
-  std::size_t bestFace = 0;
   std::size_t face = 0;
   while (face < count) {
     FitState start = stateFromBox(model, fitter.camera(), faces[face]);
@@ -79,19 +71,9 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
     FitResult fit =
         fitFromBestStart(fitter, model, image, start, search.starts, nullptr, search.finish);
     const bool done = !search.accepted || search.accepted(fit);
-    if (face == 0 || fit.confidence > best.confidence) {
-      best = std::move(fit);
-      bestFace = face;
-    }
+    if (face == 0 || fit.confidence > best.confidence) best = std::move(fit);
     ++face;
     if (done) break;
-  }
-  if (bestFace + 1 != face) {
-    // The fitter keeps the last search's templates (the overlay draws them): search the kept face
-    // once more from its result, as fitFromBestStart does, and keep that unless it is worse.
-    FitResult again = fitter.fit(image, best.state);
-    if (search.finish) search.finish(again);
-    if (again.confidence >= best.confidence) best = std::move(again);
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
   return best;
@@ -124,7 +106,6 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
                                   const std::function<bool(const FitResult&)>& accepted,
                                   int* searches) {
   FitResult best = fit;
-  bool bestIsLast = true;
   int count = 0;
   for (const int view : neighbouringViews(model, fit.view)) {
     if (view < 0) continue;
@@ -140,21 +121,9 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
     } catch (const InputError&) {
       // The turned start put the face outside the image: this neighbour is no candidate.
     }
-    bestIsLast = turned && (!accepted || accepted(*turned)) &&
-                 viewComparableScore(*turned) > viewComparableScore(best) + margin;
-    if (bestIsLast) best = std::move(*turned);
-  }
-  if (!bestIsLast) {
-    // The fitter keeps the last search's templates (the overlay draws them): search once more from
-    // the kept result, and keep that unless it is worse.
-    ++count;
-    try {
-      FitResult again = fitter.fit(image, best.state, best.view);
-      if (finish) finish(again);
-      if ((!accepted || accepted(again)) && viewComparableScore(again) >= viewComparableScore(best))
-        best = std::move(again);
-    } catch (const InputError&) {
-      // The kept fit stands; only the overlay's templates are another search's.
+    if (turned && (!accepted || accepted(*turned)) &&
+        viewComparableScore(*turned) > viewComparableScore(best) + margin) {
+      best = std::move(*turned);
     }
   }
   if (searches != nullptr) *searches += count;
@@ -175,11 +144,9 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
                                            const std::vector<FaceBox>& faces,
                                            const FaceSearch& search, double* detectMilliseconds) {
   std::optional<FitResult> best;
-  bool bestIsLast = true;  // whether the fitter's last search made `best`
   const auto consider = [&](const std::vector<FaceBox>& found) {
     FitResult fit = fitFromBestFace(fitter, model, image, found, search);
-    bestIsLast = !best || fit.confidence > best->confidence;
-    if (bestIsLast) best = std::move(fit);
+    if (!best || fit.confidence > best->confidence) best = std::move(fit);
   };
   if (!faces.empty()) consider(faces);
   for (const double angle : tiltAngles(search.tiltSteps, search.tiltStepDeg)) {
@@ -196,21 +163,12 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
   if (best && best->confidence < search.widerBelow) {
     FitResult wider =
         fitFromBestStart(fitter, model, image, best->state, search.wider, nullptr, search.finish);
-    bestIsLast = wider.confidence > best->confidence;
-    if (bestIsLast) best = std::move(wider);
+    if (wider.confidence > best->confidence) best = std::move(wider);
   }
   if (best && search.viewsBelow > 0.0 && std::isfinite(best->viewProbability) &&
       best->viewProbability < search.viewsBelow) {
-    FitResult turned = searchNeighbouringViews(fitter, model, image, *best, search.viewMargin,
-                                               search.finish, search.accepted);
-    bestIsLast = true;  // searchNeighbouringViews leaves the fitter on the fit it returns
-    best = std::move(turned);
-  }
-  if (best && !bestIsLast) {
-    // The fitter keeps the last search's templates (the overlay draws them), as fitFromBestFace.
-    FitResult again = fitter.fit(image, best->state);
-    if (search.finish) search.finish(again);
-    if (again.confidence >= best->confidence) best = std::move(again);
+    best = searchNeighbouringViews(fitter, model, image, *best, search.viewMargin, search.finish,
+                                   search.accepted);
   }
   return best;
 }

@@ -77,17 +77,35 @@ FitState Fitter::meanState(const Pose& pose) const {
   return FitState{pose, Eigen::VectorXd::Zero(model_->shape.modeCount())};
 }
 
-const std::vector<Eigen::VectorXf>& Fitter::lastTemplates() const {
-  if (templatesPending_) {
-    // The problem is still configured at the last search's finest scale and view.
-    if (optimiser_->usesExperts()) problem_.synthesiseTemplates(templateParams_);
-    lastTemplates_.resize(static_cast<std::size_t>(problem_.landmarkCount()));
-    for (int k = 0; k < problem_.landmarkCount(); ++k) {
-      lastTemplates_[static_cast<std::size_t>(k)] = problem_.synthetic(k);
-    }
-    templatesPending_ = false;
+FitTemplates Fitter::templates(const cv::Mat& image, const FitResult& fit) {
+  FitTemplates out;
+  if (!(fit.region.scale > 0.0) || fit.view < 0 ||
+      fit.view >= static_cast<int>(model_->views.size())) {
+    return out;
   }
-  return lastTemplates_;
+  checkImageSize(image);
+  // The finest level of the search's own working image, the problem configured as the search
+  // left it, and the templates synthesised at the result's estimate.
+  makeWorkingImage(image, fit.region.low, fit.region.high, fit.region.scale, 1, working_);
+  problem_.configure(model_->views[static_cast<std::size_t>(fit.view)].scales[0], working_, 0,
+                     settings_.alphaMask, fit.region.depth);
+  Eigen::VectorXd p = toParams(fit.state);
+  problem_.clamp(p);
+  problem_.synthesiseTemplates(p);
+  out.values.resize(static_cast<std::size_t>(problem_.landmarkCount()));
+  for (int k = 0; k < problem_.landmarkCount(); ++k) {
+    out.values[static_cast<std::size_t>(k)] = problem_.synthetic(k);
+  }
+  out.pixelSize = 1.0 / working_.gain.mean();
+  return out;
+}
+
+void Fitter::checkImageSize(const cv::Mat& image) const {
+  if (image.cols != camera_.width || image.rows != camera_.height) {
+    throw InputError("fit: the image is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + " but the camera is " +
+                     std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
+  }
 }
 
 Eigen::Matrix2Xd Fitter::project(const FitState& state) const {
@@ -95,11 +113,7 @@ Eigen::Matrix2Xd Fitter::project(const FitState& state) const {
 }
 
 FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentView) {
-  if (image.cols != camera_.width || image.rows != camera_.height) {
-    throw InputError("fit: the image is " + std::to_string(image.cols) + "x" +
-                     std::to_string(image.rows) + " but the camera is " +
-                     std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
-  }
+  checkImageSize(image);
   const int modes = model_->shape.modeCount();
   if (start.shape.size() != 0 && start.shape.size() != modes) {
     throw InputError("fit: the start state has " + std::to_string(start.shape.size()) +
@@ -128,7 +142,6 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
       (low - margin).x() > image.cols - 1 || (low - margin).y() > image.rows - 1) {
     throw InputError("fit: the start pose puts the face outside the image");
   }
-  templatesPending_ = false;  // the working image and problem are about to change
   makeWorkingImage(image, low - margin, high + margin, scale, scales_, working_);
 
   optimiser_->beginFit(p);
@@ -165,17 +178,15 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
   view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
   const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
   problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
-  // The templates at the final estimate: the template optimisers' confidence matches them now;
-  // with experts they are only drawn, and lastTemplates() synthesises them if asked.
+  // The templates at the final estimate: the template optimisers' confidence matches them; with
+  // experts they are only drawn, and templates() makes them if asked.
   if (!optimiser_->usesExperts()) problem_.synthesiseTemplates(p);
   Eigen::VectorXd perLandmark(problem_.landmarkCount());
   result.confidence = optimiser_->usesExperts()
                           ? expertResponses(problem_.image(), problem_.projector(), finest.experts,
                                             finest.patchSize, p, perLandmark)
                           : problem_.landmarkNcc(p, perLandmark);
-  templateParams_ = p;
-  templatesPending_ = true;
-  lastTemplatePixel_ = 1.0 / working_.gain.mean();
+  result.region = SearchRegion{low - margin, high + margin, scale, depth};
 
   fromParams(p, state);
   result.state = state;

@@ -38,6 +38,24 @@ struct FitSettings {
   bool operator==(const FitSettings&) const = default;
 };
 
+// Where a search read the image: the box of the input image it cut (input pixels), the scale it
+// brought that box to and the depth it configured the patches for. Fitter::templates makes the
+// same working image again from it, so a result can be drawn without the search's state.
+struct SearchRegion {
+  Eigen::Vector2d low{0.0, 0.0};
+  Eigen::Vector2d high{0.0, 0.0};
+  double scale = 0.0;  // 0: no search made this result
+  double depth = 0.0;
+};
+
+// A fit's synthetic templates at its final estimate and finest scale, unmasked: per landmark of
+// its view (in `modelled` order), patchSize^2 values each in the model's normalised units, and the
+// size of one template pixel in input pixels (for drawing).
+struct FitTemplates {
+  std::vector<Eigen::VectorXf> values;
+  double pixelSize = 1.0;
+};
+
 struct FitResult {
   FitState state;
   Eigen::Matrix2Xd points;     // every scheme landmark, input pixels
@@ -61,6 +79,7 @@ struct FitResult {
   double viewProbability = std::numeric_limits<double>::quiet_NaN();
   bool converged = false;  // the finest scale met the tolerance within maxIterations
   int iterations = 0;      // over all scales
+  SearchRegion region;     // where the search read the image (Fitter::templates)
 
   // The search's own confidence, checked or not.
   double searchScore() const {
@@ -83,13 +102,12 @@ class Fitter {
 
   // Points of every landmark at `state` in input pixels.
   Eigen::Matrix2Xd project(const FitState& state) const;
-  // The unmasked synthetic templates of the last search's finest scale, per landmark of the
-  // final view (in `modelled` order), patchSize^2 values each in the model's normalised units,
-  // and the working-image pixel size of one template pixel in input pixels (for drawing).
-  // Synthesised when first asked for after a search (only the overlay draws them; rlms's
-  // confidence does not need them), so a search that nobody draws does not pay for them.
-  const std::vector<Eigen::VectorXf>& lastTemplates() const;
-  double lastTemplatePixelSize() const { return lastTemplatePixel_; }
+  // The templates of `fit` (a result of a search of `image` by a fitter of this model, camera and
+  // settings), made from the image again where that search read it: the overlay's patches. Only
+  // the overlay needs them (rlms's confidence does not), so a search does not make them. Empty for
+  // a result no search made (its region's scale 0) or without a view. InputError for an image of
+  // the wrong size. Reuses the fitter's buffers, as a search does.
+  FitTemplates templates(const cv::Mat& image, const FitResult& fit);
 
   const ClmModel& model() const { return *model_; }
   const Camera& camera() const { return camera_; }
@@ -98,20 +116,17 @@ class Fitter {
   FitState meanState(const Pose& pose) const;
 
  private:
+  void checkImageSize(const cv::Mat& image) const;  // InputError unless the camera's size
   const ClmModel* model_;
   Camera camera_;
   FitSettings settings_;
   int scales_ = 1;
   ViewSelector selector_;
   std::unique_ptr<Optimiser> optimiser_;
-  mutable SearchProblem problem_;  // lastTemplates() synthesises into it after a search
+  SearchProblem problem_;
   WorkingImage working_;
   std::pair<int, int> eyes_;        // the scheme's normalisation pair
   double targetInterOcular_ = 0.0;  // pixels at the finest scale, as in training
-  mutable std::vector<Eigen::VectorXf> lastTemplates_;
-  mutable bool templatesPending_ = false;  // lastTemplates_ is not yet the last search's
-  Eigen::VectorXd templateParams_;         // the last search's final parameters
-  double lastTemplatePixel_ = 1.0;
 };
 
 }  // namespace clm3d

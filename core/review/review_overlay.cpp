@@ -24,7 +24,7 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
   }
   if (presentCount == 0) {
     step.failure = TrackFailure::NoFace;
-    drawFitOverlay(bgr, step, fitter, scheme, options);
+    drawFitOverlay(bgr, bgr, step, fitter, scheme, options);
     return;
   }
   std::optional<FrameFit> start = fit;
@@ -46,11 +46,11 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
     FitOverlayOptions withoutPatches = options;
     withoutPatches.patches = false;
     withoutPatches.label = false;
-    drawFitOverlay(bgr, step, fitter, scheme, withoutPatches);
+    drawFitOverlay(bgr, bgr, step, fitter, scheme, withoutPatches);
     return;
   }
   step.fit->confidence = shown.confidence;
-  drawFitOverlay(bgr, step, fitter, scheme, options);
+  drawFitOverlay(bgr, bgr, step, fitter, scheme, options);
 }
 
 }  // namespace clm3d

@@ -1,9 +1,9 @@
 // Drawing one reviewed frame with core's drawFitOverlay (the same drawing as `clm3d track
 // --overlay`): the shown points are the ground-truth row (the track, or the hand correction), the
-// patches come from one short search from the frame's stored fit state, which puts the fitter's
-// templates back (one iteration at the finest scale: a few ms at webcam sizes, measured by the
-// page). The studio's frame view draws its patches with it on the GUI thread and its overlay
-// export on a worker; the fitter passed in must be the caller's own (it is not thread-safe).
+// patches are the templates of one short search from the frame's stored fit state (one iteration
+// at the finest scale: a few ms at webcam sizes, measured by the page). The studio's frame view
+// draws its patches with it on the GUI thread and its overlay export on a worker; the fitter passed
+// in must be the caller's own (it is not thread-safe).
 #pragma once
 
 #include <opencv2/core/mat.hpp>

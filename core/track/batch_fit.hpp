@@ -118,10 +118,10 @@ class ImageFitter {
                           const std::filesystem::path& startPoints = {},
                           const std::filesystem::path& output = {});
 
-  // The last image read and the Fitter that searched it (for an overlay), empty / null before the
-  // first search.
+  // The last image read and the Fitter that searched it (an overlay's templates are made by it
+  // from the image: drawPhotoOverlay), empty / null before the first search.
   const cv::Mat& lastImage() const { return lastImage_; }
-  const Fitter* lastFitter() const { return fitter_.get(); }
+  Fitter* lastFitter() { return fitter_.get(); }
   const ClmModel& model() const { return *model_; }
 
  private:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "core/viz/landmark_overlay.hpp"
 
@@ -36,24 +37,22 @@ void pastePatch(cv::Mat& bgr, const cv::Mat& grey, const Eigen::Vector2d& centre
   scaled(cv::Rect(target.x - x0, target.y - y0, target.width, target.height)).copyTo(bgr(target));
 }
 
-}  // namespace
-
-void drawFitOverlay(cv::Mat& bgr, const TrackStep& step, const Fitter& fitter, const Scheme& scheme,
-                    const FitOverlayOptions& options) {
-  if (step.fit && options.patches) {
-    const FitResult& fit = *step.fit;
-    const auto& templates = fitter.lastTemplates();
+// The fit's patches (its templates made from `frame` where its search read it) and landmarks.
+void drawResult(cv::Mat& bgr, const cv::Mat& frame, const FitResult& fit, Fitter& fitter,
+                const Scheme& scheme, const FitOverlayOptions& options) {
+  if (options.patches) {
+    // Made before anything is drawn: `bgr` may be `frame` itself.
+    const FitTemplates templates = fitter.templates(frame, fit);
     std::size_t entry = 0;
-    for (std::size_t i = 0; i < fit.modelled.size() && entry < templates.size(); ++i) {
+    for (std::size_t i = 0; i < fit.modelled.size() && entry < templates.values.size(); ++i) {
       if (!fit.modelled[i]) continue;
-      const Eigen::VectorXf& values = templates[entry++];
+      const Eigen::VectorXf& values = templates.values[entry++];
       const int size = static_cast<int>(std::lround(std::sqrt(static_cast<double>(values.size()))));
       pastePatch(bgr, templateImage(values, size), fit.points.col(static_cast<Eigen::Index>(i)),
-                 fitter.lastTemplatePixelSize());
+                 templates.pixelSize);
     }
   }
-  if (step.fit && options.landmarks) {
-    const FitResult& fit = *step.fit;
+  if (options.landmarks) {
     LandmarkSet points(static_cast<int>(fit.points.cols()), 2);
     for (int i = 0; i < points.size(); ++i) {
       if (fit.points.col(i).allFinite()) points.set(i, Eigen::Vector2d(fit.points.col(i)));
@@ -62,23 +61,47 @@ void drawFitOverlay(cv::Mat& bgr, const TrackStep& step, const Fitter& fitter, c
     style.numbers = false;
     drawLandmarks(bgr, points, fit.modelled, scheme, style);
   }
-  if (options.label) {
-    char text[160];
-    if (step.fit) {
-      const ViewModel& view = fitter.model().views[static_cast<std::size_t>(step.fit->view)];
-      std::snprintf(text, sizeof text, "frame %d  view %+.0f/%+.0f  conf %.2f%s", step.row.frame,
-                    view.pitchDeg, view.yawDeg, step.fit->confidence,
-                    step.row.success ? "" : "  LOST");
-    } else {
-      std::snprintf(text, sizeof text, "frame %d  %s", step.row.frame, toString(step.failure));
-    }
-    const double scale = std::max(0.4, bgr.rows / 600.0);
-    const cv::Scalar colour = step.row.success ? cv::Scalar(80, 230, 80) : cv::Scalar(60, 60, 240);
-    cv::putText(bgr, text, cv::Point(8, static_cast<int>(22 * scale)), cv::FONT_HERSHEY_SIMPLEX,
-                scale * 0.6, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
-    cv::putText(bgr, text, cv::Point(8, static_cast<int>(22 * scale)), cv::FONT_HERSHEY_SIMPLEX,
-                scale * 0.6, colour, 1, cv::LINE_AA);
+}
+
+// "WHAT  view P/Y  conf C" (or WHAT alone without a fit) in the corner, green when it passed.
+void drawLabel(cv::Mat& bgr, const std::string& what, const FitResult* fit, const Fitter& fitter,
+               bool passed, const char* failedMark) {
+  char text[200];
+  if (fit != nullptr && fit->view >= 0 &&
+      fit->view < static_cast<int>(fitter.model().views.size())) {
+    const ViewModel& view = fitter.model().views[static_cast<std::size_t>(fit->view)];
+    std::snprintf(text, sizeof text, "%s  view %+.0f/%+.0f  conf %.2f%s", what.c_str(),
+                  view.pitchDeg, view.yawDeg, fit->confidence, passed ? "" : failedMark);
+  } else {
+    std::snprintf(text, sizeof text, "%s", what.c_str());
   }
+  const double scale = std::max(0.4, bgr.rows / 600.0);
+  const cv::Scalar colour = passed ? cv::Scalar(80, 230, 80) : cv::Scalar(60, 60, 240);
+  const cv::Point corner(8, static_cast<int>(22 * scale));
+  cv::putText(bgr, text, corner, cv::FONT_HERSHEY_SIMPLEX, scale * 0.6, cv::Scalar(0, 0, 0), 3,
+              cv::LINE_AA);
+  cv::putText(bgr, text, corner, cv::FONT_HERSHEY_SIMPLEX, scale * 0.6, colour, 1, cv::LINE_AA);
+}
+
+}  // namespace
+
+void drawFitOverlay(cv::Mat& bgr, const cv::Mat& frame, const TrackStep& step, Fitter& fitter,
+                    const Scheme& scheme, const FitOverlayOptions& options) {
+  if (step.fit) drawResult(bgr, frame, *step.fit, fitter, scheme, options);
+  if (!options.label) return;
+  const std::string what = "frame " + std::to_string(step.row.frame);
+  if (step.fit) {
+    drawLabel(bgr, what, &*step.fit, fitter, step.row.success, "  LOST");
+  } else {
+    drawLabel(bgr, what + "  " + toString(step.failure), nullptr, fitter, step.row.success, "");
+  }
+}
+
+void drawPhotoOverlay(cv::Mat& bgr, const cv::Mat& photo, const FitResult& fit, bool passed,
+                      const std::string& name, Fitter& fitter, const Scheme& scheme,
+                      const FitOverlayOptions& options) {
+  drawResult(bgr, photo, fit, fitter, scheme, options);
+  if (options.label) drawLabel(bgr, name, &fit, fitter, passed, "  REJECTED");
 }
 
 }  // namespace clm3d

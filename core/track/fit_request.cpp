@@ -79,12 +79,9 @@ CommandReport fitOne(const R& args) {
   std::ostringstream text;
   // The overlay first: it shows where a rejected fit went.
   if (!args.overlay.empty()) {
-    TrackStep step;
-    step.fit = fit;
-    step.row.success = !rejected;
-    step.row.confidence = fit.confidence;
     cv::Mat drawn = fitter.lastImage().clone();
-    drawFitOverlay(drawn, step, *fitter.lastFitter(), model.scheme());
+    drawPhotoOverlay(drawn, fitter.lastImage(), fit, !rejected, args.image.filename().string(),
+                     *fitter.lastFitter(), model.scheme());
     writeImage(args.overlay, drawn);
     text << "overlay: " << args.overlay.string() << '\n';
   }

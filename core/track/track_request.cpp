@@ -107,7 +107,7 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   const auto perFrame = [&](const cv::Mat& frame, const TrackStep& step, Tracker& tracker) {
     if (!overlay) return;
     cv::Mat drawn = frame.clone();
-    drawFitOverlay(drawn, step, tracker.fitter(), scheme);
+    drawFitOverlay(drawn, frame, step, tracker.fitter(), scheme);
     overlay->write(drawn);
   };
   const auto perFrameFaces = [&](const cv::Mat& frame, const std::vector<FaceStep>& steps,
@@ -115,7 +115,7 @@ CommandReport run(const R& args, const ProgressCallback& progress,
     if (!overlay) return;
     cv::Mat drawn = frame.clone();
     for (const FaceStep& face : steps) {
-      drawFitOverlay(drawn, face.step, tracker.tracker(face.face).fitter(), scheme);
+      drawFitOverlay(drawn, frame, face.step, tracker.tracker(face.face).fitter(), scheme);
     }
     overlay->write(drawn);
   };

@@ -119,10 +119,11 @@ TEST(RlmsOptimiser, ConfidenceRejectsADisplacedFit) {
   EXPECT_LT(wrong.confidence, 0.5 * right.confidence);
 }
 
-// rlms's confidence needs no synthetic templates, so the fitter makes them when the overlay first
-// asks (Fitter::lastTemplates): they are the last search's, whether asked for after every search
-// or only after the last, as a fitter that made only that search gives.
-TEST(RlmsOptimiser, LastTemplatesAreTheLastSearchsWheneverAskedFor) {
+// rlms's confidence needs no synthetic templates, so a search does not make them: the overlay asks
+// the fitter for a result's templates (Fitter::templates), made from the image where that search
+// read it. They are the result's own, whatever the fitter searched since, and the same from a
+// fitter that never searched.
+TEST(RlmsOptimiser, TemplatesAreTheResultsWhicheverFitterMakesThem) {
   const ClmModel& model = fitTestModel();
   const test::FitScene scene = makeFitScene(model, 0.0, 0.0);
   FitSettings settings;
@@ -131,35 +132,37 @@ TEST(RlmsOptimiser, LastTemplatesAreTheLastSearchsWheneverAskedFor) {
   const FitState first = test::perturbState(scene, model, off, -off / 2, 0.0, 1.0, 0.0);
   const FitState second = test::perturbState(scene, model, -off, off / 3, 0.0, 1.0, 0.0);
 
-  Fitter alone(model, scene.camera, settings);
-  const FitResult fit = alone.fit(scene.image, second);
-  const std::vector<Eigen::VectorXf> expected = alone.lastTemplates();
-  ASSERT_EQ(expected.size(),
-            model.views[static_cast<std::size_t>(fit.view)].scales[0].landmarks.size());
-  EXPECT_TRUE(expected.front().allFinite());
-  EXPECT_GT(expected.front().norm(), 0.0f);
+  Fitter searcher(model, scene.camera, settings);
+  const FitResult ofFirst = searcher.fit(scene.image, first);
+  const FitTemplates expected = searcher.templates(scene.image, ofFirst);
+  ASSERT_EQ(expected.values.size(),
+            model.views[static_cast<std::size_t>(ofFirst.view)].scales[0].landmarks.size());
+  EXPECT_TRUE(expected.values.front().allFinite());
+  EXPECT_GT(expected.values.front().norm(), 0.0f);
+  EXPECT_GT(expected.pixelSize, 0.0);
 
-  Fitter askedEveryTime(model, scene.camera, settings);
-  (void)askedEveryTime.fit(scene.image, first);
-  const std::vector<Eigen::VectorXf> ofFirst = askedEveryTime.lastTemplates();
-  (void)askedEveryTime.fit(scene.image, second);
-  Fitter askedAtTheEnd(model, scene.camera, settings);
-  (void)askedAtTheEnd.fit(scene.image, first);
-  (void)askedAtTheEnd.fit(scene.image, second);
-  for (const Fitter* fitter : {&askedEveryTime, &askedAtTheEnd}) {
-    const std::vector<Eigen::VectorXf>& templates = fitter->lastTemplates();
-    ASSERT_EQ(templates.size(), expected.size());
-    for (std::size_t k = 0; k < templates.size(); ++k) EXPECT_EQ(templates[k], expected[k]);
+  const FitResult ofSecond = searcher.fit(scene.image, second);
+  Fitter fresh(model, scene.camera, settings);
+  for (Fitter* fitter : {&searcher, &fresh}) {
+    const FitTemplates again = fitter->templates(scene.image, ofFirst);
+    ASSERT_EQ(again.values.size(), expected.values.size());
+    for (std::size_t k = 0; k < again.values.size(); ++k)
+      EXPECT_EQ(again.values[k], expected.values[k]) << k;
+    EXPECT_EQ(again.pixelSize, expected.pixelSize);
   }
-  // A start that leaves the image changes nothing: the templates stay the last search's.
-  FitState outside = second;
-  outside.pose.translation.x() += 1e4;
-  EXPECT_THROW((void)askedAtTheEnd.fit(scene.image, outside), InputError);
-  EXPECT_EQ(askedAtTheEnd.lastTemplates().front(), expected.front());
+  const FitTemplates other = searcher.templates(scene.image, ofSecond);
   bool differs = false;
-  for (std::size_t k = 0; k < ofFirst.size() && k < expected.size(); ++k)
-    differs = differs || ofFirst[k] != expected[k];
+  for (std::size_t k = 0; k < other.values.size() && k < expected.values.size(); ++k)
+    differs = differs || other.values[k] != expected.values[k];
   EXPECT_TRUE(differs) << "the two searches should end apart for this test to mean something";
+
+  // A result no search made has no templates; an image of another size is refused.
+  FitResult byHand = ofFirst;
+  byHand.region = SearchRegion{};
+  EXPECT_TRUE(searcher.templates(scene.image, byHand).values.empty());
+  cv::Mat smaller;
+  cv::resize(scene.image, smaller, cv::Size(scene.image.cols / 2, scene.image.rows / 2));
+  EXPECT_THROW((void)searcher.templates(smaller, ofFirst), InputError);
 }
 
 TEST(RlmsOptimiser, ModelWithoutExpertsIsRefused) {

@@ -457,15 +457,35 @@ TEST(FitOverlay, DrawsPatchesLandmarksAndLabel) {
   step.fit = fitter.fit(scene.image, scene.truth);
   step.row.success = true;
   cv::Mat drawn = scene.image.clone();
-  drawFitOverlay(drawn, step, fitter, Scheme::thesis25());
+  drawFitOverlay(drawn, scene.image, step, fitter, Scheme::thesis25());
   cv::Mat difference;
   cv::absdiff(drawn, scene.image, difference);
   cv::cvtColor(difference, difference, cv::COLOR_BGR2GRAY);
   // Patches cover a good part of the face: far more changed pixels than dots alone would.
   EXPECT_GT(cv::countNonZero(difference), 25 * 80);
-  EXPECT_EQ(fitter.lastTemplates().size(),
+  EXPECT_EQ(fitter.templates(scene.image, *step.fit).values.size(),
             static_cast<std::size_t>(
                 std::count(step.fit->modelled.begin(), step.fit->modelled.end(), true)));
+
+  // Drawn on the frame itself (the source aliased), and after the fitter searched elsewhere: the
+  // same picture, from the result alone.
+  FitState elsewhere = scene.truth;
+  elsewhere.pose.translation.x() += 10.0;
+  (void)fitter.fit(scene.image, elsewhere);
+  cv::Mat inPlace = scene.image.clone();
+  drawFitOverlay(inPlace, inPlace, step, fitter, Scheme::thesis25());
+  EXPECT_EQ(cv::norm(inPlace, drawn, cv::NORM_INF), 0.0);
+
+  // A photo's overlay is the same drawing but for its label.
+  FitOverlayOptions unlabelled;
+  unlabelled.label = false;
+  cv::Mat frameDrawn = scene.image.clone();
+  cv::Mat photoDrawn = scene.image.clone();
+  drawFitOverlay(frameDrawn, scene.image, step, fitter, Scheme::thesis25(), unlabelled);
+  drawPhotoOverlay(photoDrawn, scene.image, *step.fit, true, "face.png", fitter, Scheme::thesis25(),
+                   unlabelled);
+  EXPECT_EQ(cv::norm(frameDrawn, photoDrawn, cv::NORM_INF), 0.0);
+  EXPECT_GT(cv::norm(frameDrawn, scene.image, cv::NORM_INF), 0.0);
 }
 
 }  // namespace
