@@ -35,8 +35,8 @@ struct TrackerSettings {
   // rescaled starts did no better (docs/initialisation.md). Used by `clm3d fit` and by the tracker
   // on the frames it detects. The grid is searched only when the start's own fit has a confidence
   // below 0.9999 (for a model trained with photos, the point check's probability, which is above
-  // that for about three photos in four): on the 100 held-out photos the median fit went from 42-49
-  // to 11.9 ms and the mean error from 0.0428 to 0.0430 (docs/real-faces.md#time-a-photo).
+  // that for about three photos in four): on the 100 held-out photos the median fit went from 35-40
+  // to 11.7 ms and the mean error from 0.0426 to 0.0430 (docs/real-faces.md#time-a-photo).
   StartSearchSettings startSearch{1, 0.10, {}, 0.9999};
   // The detector's faces searched, best first, until one's fit does not fail: a false detection
   // ranked first (a mouth, a pattern on a shirt) or a second person no longer costs the face. On
@@ -68,8 +68,8 @@ struct TrackerSettings {
   // How far those copies are moved, in eye distances (RefinerStarts::spread).
   double refineSpread = RefinerStarts{}.spread;
   // Those runs are made only when the kept fit's check probability is below this: a fit the check
-  // doubts. With the start grid's 0.9999 on the 100 held-out photos: median fit 11.9 -> 4-4.6 ms,
-  // mean error 0.0430 either way (docs/real-faces.md#time-a-photo). 0 = always.
+  // doubts. With the start grid's 0.9999 on the 100 held-out photos: median fit 11.7 -> 3.5-4.2 ms,
+  // mean error 0.0430 -> 0.0429 (docs/real-faces.md#time-a-photo). 0 = always.
   double refineRunsBelow = 0.9999;
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
