@@ -59,7 +59,8 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
 }
 
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
-                          const std::vector<FaceBox>& faces, const FaceSearch& search, int* tried) {
+                          const std::vector<FaceBox>& faces, const FaceSearch& search, int* tried,
+                          int* searches) {
   if (faces.empty()) throw InputError("face search: no faces to search");
   const std::size_t count =
       std::min(faces.size(), static_cast<std::size_t>(std::max(1, search.maxFaces)));
@@ -68,12 +69,16 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
   while (face < count) {
     FitState start = stateFromBox(model, fitter.camera(), faces[face]);
     if (search.placed) start = search.placed(start);
+    int made = 0;
     FitResult fit =
-        fitFromBestStart(fitter, model, image, start, search.starts, nullptr, search.finish);
-    const bool done = !search.accepted || search.accepted(fit);
-    if (face == 0 || fit.confidence > best.confidence) best = std::move(fit);
+        fitFromBestStart(fitter, model, image, start, search.starts, &made, search.finish);
+    if (searches != nullptr) *searches += made;
     ++face;
-    if (done) break;
+    if (!search.accepted || search.accepted(fit)) {
+      best = std::move(fit);  // the first accepted fit, whatever the confidence of those before
+      break;
+    }
+    if (face == 1 || fit.confidence > best.confidence) best = std::move(fit);
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
   return best;

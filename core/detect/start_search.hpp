@@ -74,10 +74,12 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
 
 // A detected image's search over its faces: fitFromBestStart from stateFromBox of each face in
 // `faces` order (best first), `placed` applied to each start when given, until `accepted` says
-// yes to a fit or maxFaces faces are searched; returns the most confident fit (the first on ties)
-// and, in `tried`, the number of faces searched. A false detection ranked first then costs one
-// more search instead of the face. Throws InputError for an empty `faces` or a box stateFromBox
-// refuses.
+// yes to a fit or maxFaces faces are searched; returns the accepted fit, or without one the most
+// confident (the first on ties); in `tried`, the number of faces searched, and `searches`, when
+// given, has the searches made added. A false detection ranked first then costs one more search
+// instead of the face. `clm3d fit`, `clm3d batch` (through fitFromDetections) and the tracker's
+// detections all search their faces with it. Throws InputError for an empty `faces`, a box
+// stateFromBox refuses or a start that puts the face outside the image.
 struct FaceSearch {
   int maxFaces = 1;
   StartSearchSettings starts;
@@ -102,7 +104,7 @@ struct FaceSearch {
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,
-                          int* tried = nullptr);
+                          int* tried = nullptr, int* searches = nullptr);
 
 // The turns of a tilted-face search, nearest first: -step, +step, -2 step, +2 step, ...
 std::vector<double> tiltAngles(int steps, double stepDeg);

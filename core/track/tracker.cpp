@@ -193,17 +193,11 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
               .count();
     };
   }
-  const auto attempt = [&](const FitState& start, int view,
-                           const StartSearchSettings* search = nullptr) {
+  // Runs `search` (searches and their refinement), judges its fit and adds its time.
+  const auto judged = [&](const auto& search) {
     const auto begin = std::chrono::steady_clock::now();
-    ++step.searches;
     try {
-      if (search != nullptr) {
-        step.fit = fitFromBestStart(fitter_, *model_, frame, start, *search, nullptr, finish);
-      } else {
-        step.fit = fitter_.fit(frame, start, view);
-        if (finish) finish(*step.fit);
-      }
+      step.fit = search();
       step.failure = judge(*step.fit);
     } catch (const InputError&) {
       // The start put the face outside the image: the track is lost, not the input broken.
@@ -212,6 +206,26 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
     }
     searchMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  };
+  // One search from `start`.
+  const auto attempt = [&](const FitState& start, int view) {
+    judged([&] {
+      ++step.searches;
+      FitResult fit = fitter_.fit(frame, start, view);
+      if (finish) finish(fit);
+      return fit;
+    });
+  };
+  // The detected faces, through the face loop every detected image goes through.
+  const auto searchFaces = [&](const std::vector<FaceBox>& faces) {
+    judged([&] {
+      FaceSearch search;
+      search.maxFaces = settings_.facesTried;
+      search.starts = settings_.startSearch;
+      search.accepted = [this](const FitResult& fit) { return judge(fit) == TrackFailure::None; };
+      search.finish = finish;
+      return fitFromBestFace(fitter_, *model_, frame, faces, search, nullptr, &step.searches);
+    });
   };
 
   const bool fromPrevious = state_.has_value();
@@ -240,13 +254,9 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     if (!faces.empty()) {
       step.detected = true;
-      // The next face while the fit fails (TrackerSettings::facesTried); the last one's stands.
-      const auto tried =
-          std::min(faces.size(), static_cast<std::size_t>(std::max(1, settings_.facesTried)));
-      for (std::size_t face = 0; face < tried; ++face) {
-        attempt(stateFromBox(*model_, camera_, faces[face]), -1, &settings_.startSearch);
-        if (step.failure == TrackFailure::None) break;
-      }
+      // The next face while the fit fails (TrackerSettings::facesTried); without a fit that
+      // passes, the most confident stands.
+      searchFaces(faces);
     } else if (!fromPrevious) {
       step.failure = TrackFailure::NoFace;
     }

@@ -41,10 +41,10 @@ struct TrackerSettings {
   // The detector's faces searched, best first, until one's fit does not fail: a false detection
   // ranked first (a mouth, a pattern on a shirt) or a second person no longer costs the face. On
   // the LFPW photo sequences a frame of image_0016 was lost to the other person's box
-  // (docs/initialisation.md). The tracker judges each fit as it judges a frame; `clm3d fit` tries
-  // the next face while the point refiner's check rejects the fit and keeps the most confident
-  // (without a check, whose confidence would tell a wrong fit, it searches the best face only). 1 =
-  // the best face only.
+  // (docs/initialisation.md). One face loop for both (fitFromBestFace): the tracker judges each fit
+  // as it judges a frame, `clm3d fit` by the point refiner's check (without a check, whose
+  // confidence would tell a wrong fit, it searches the best face only); the first fit that passes
+  // is kept, or else the most confident. 1 = the best face only.
   int facesTried = 3;
   // Tilted faces (`clm3d fit`): when no upright face's fit passes the point refiner's check (or no
   // face is found), the detector runs on copies of the image turned by +-tiltStepDeg, +-2

@@ -437,11 +437,44 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   EXPECT_EQ(tried, 2) << "stops at the first fit accepted";
   EXPECT_GT(next.confidence, 0.5);
   EXPECT_LT(error(next), 0.1);
+  // The first accepted fit is kept, even when a fit before it was more confident (the tracker's
+  // verdict is not the confidence alone): here a verdict that wants a low probability.
+  search.accepted = [](const FitResult& fit) { return fit.confidence < 0.5; };
+  const FitResult accepted =
+      fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
+  EXPECT_EQ(tried, 2);
+  EXPECT_LT(accepted.confidence, 0.5);
+  EXPECT_GT(error(accepted), 0.5);
   // Without a verdict the first face's fit is kept.
   search.accepted = {};
   fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
   EXPECT_EQ(tried, 1);
   EXPECT_THROW(fitFromBestFace(fitter, model, scene.image, {}, search), InputError);
+}
+
+// The tracker's detections go through the same face loop: with the false box ranked first, one
+// face tried loses the frame, three find the face.
+TEST(ImageFitRefiner, TheTrackersDetectionsTryTheNextFaceToo) {
+  ClmModel model = fitTestModel();
+  model.refiner = test::photoRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
+  const FaceBox face = calibratedBox(scene);
+  FaceBox background;
+  background.box = cv::Rect2d(8.0, 90.0, 0.45 * face.box.width, 0.45 * face.box.width);
+  const auto firstFrame = [&](int facesTried) {
+    TrackerSettings settings;
+    settings.facesTried = facesTried;
+    Tracker tracker(model, scene.camera, settings);
+    tracker.setFaceSource([&](const cv::Mat&) { return std::vector<FaceBox>{background, face}; });
+    return tracker.track(scene.image, 0, 0.0);
+  };
+  const TrackStep one = firstFrame(1);
+  EXPECT_TRUE(one.detected);
+  EXPECT_FALSE(one.row.success);
+  const TrackStep three = firstFrame(3);
+  ASSERT_TRUE(three.row.success) << toString(three.failure);
+  EXPECT_GT(three.searches, one.searches);
+  EXPECT_LT(meanPointError(three.row.points, scene.truthPoints) / scene.interOcular, 0.1);
 }
 
 // A face the detector boxed too small: the fit from it is one the check doubts, and with
