@@ -18,19 +18,14 @@ using test::runClm3d;
 
 // The fixture model, a 7-frame video of the held-out head and its truth with frames 2 and 5
 // corrected.
-struct AdaptInputs {
-  std::filesystem::path model, video, truth;
-  TrackTable table;
-};
+using AdaptInputs = test::HeldOutInputs;
 
 AdaptInputs writeAdaptInputs(const std::filesystem::path& folder) {
-  const test::HeldOutSequence written = test::writeHeldOutSequence(folder, 6.0);
-  AdaptInputs inputs{folder / "general.clm3d", written.files.video, folder / "gt.csv",
-                     written.summary.truth};
-  saveModel(test::fitTestModel(), inputs.model);
-  GroundTruthSet truth = GroundTruthSet::fromTrack(written.summary.truth, written.summary.frames);
-  truth.setKeyframe(2, written.summary.truth.rows[2].points);
-  truth.setKeyframe(5, written.summary.truth.rows[5].points);
+  AdaptInputs inputs = test::writeHeldOutInputs(folder);
+  GroundTruthSet truth = GroundTruthSet::fromTrack(inputs.table, inputs.frames);
+  truth.setKeyframe(2, inputs.table.rows[2].points);
+  truth.setKeyframe(5, inputs.table.rows[5].points);
+  inputs.truth = folder / "gt.csv";
   saveGroundTruth(inputs.truth, truth);
   return inputs;
 }

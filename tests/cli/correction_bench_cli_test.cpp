@@ -8,7 +8,6 @@
 #include <sstream>
 #include <string>
 
-#include "core/model/model_file.hpp"
 #include "core/track/track_table.hpp"
 #include "tests/support/held_out_sequence.hpp"
 #include "tests/support/test_support.hpp"
@@ -19,18 +18,8 @@ namespace {
 using test::quoted;
 using test::runClm3d;
 
-struct BenchInputs {
-  std::filesystem::path model, video, truth;
-  TrackTable table;
-};
-
-BenchInputs writeBenchInputs(const std::filesystem::path& folder) {
-  const test::HeldOutSequence written = test::writeHeldOutSequence(folder, 6.0);
-  BenchInputs inputs{folder / "general.clm3d", written.files.video, written.files.truth,
-                     written.summary.truth};
-  saveModel(test::fitTestModel(), inputs.model);
-  return inputs;
-}
+using BenchInputs = test::HeldOutInputs;
+constexpr auto writeBenchInputs = test::writeHeldOutInputs;
 
 std::string benchCommand(const BenchInputs& inputs, const std::string& more) {
   return "correction-bench --model " + quoted(inputs.model) + " --video " + quoted(inputs.video) +
