@@ -64,24 +64,31 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
   if (faces.empty()) throw InputError("face search: no faces to search");
   const std::size_t count =
       std::min(faces.size(), static_cast<std::size_t>(std::max(1, search.maxFaces)));
-  FitResult best;
+  std::optional<FitResult> best;
+  std::optional<InputError> firstError;  // a face whose start left the image: the next is tried
   std::size_t face = 0;
   while (face < count) {
     FitState start = stateFromBox(model, fitter.camera(), faces[face]);
     if (search.placed) start = search.placed(start);
-    int made = 0;
-    FitResult fit =
-        fitFromBestStart(fitter, model, image, start, search.starts, &made, search.finish);
-    if (searches != nullptr) *searches += made;
     ++face;
-    if (!search.accepted || search.accepted(fit)) {
+    int made = 0;
+    std::optional<FitResult> fit;
+    try {
+      fit = fitFromBestStart(fitter, model, image, start, search.starts, &made, search.finish);
+    } catch (const InputError& e) {
+      if (!firstError) firstError = e;
+    }
+    if (searches != nullptr) *searches += made;
+    if (!fit) continue;
+    if (!search.accepted || search.accepted(*fit)) {
       best = std::move(fit);  // the first accepted fit, whatever the confidence of those before
       break;
     }
-    if (face == 1 || fit.confidence > best.confidence) best = std::move(fit);
+    if (!best || fit->confidence > best->confidence) best = std::move(fit);
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
-  return best;
+  if (!best) throw *firstError;  // no face could be searched
+  return std::move(*best);
 }
 
 double viewComparableScore(const FitResult& fit) {

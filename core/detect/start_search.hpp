@@ -78,8 +78,9 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
 // confident (the first on ties); in `tried`, the number of faces searched, and `searches`, when
 // given, has the searches made added. A false detection ranked first then costs one more search
 // instead of the face. `clm3d fit`, `clm3d batch` (through fitFromDetections) and the tracker's
-// detections all search their faces with it. Throws InputError for an empty `faces`, a box
-// stateFromBox refuses or a start that puts the face outside the image.
+// detections all search their faces with it. A face whose start puts it outside the image is
+// passed over. Throws InputError for an empty `faces`, a box stateFromBox refuses, or when no
+// face could be searched (the first face's error).
 struct FaceSearch {
   int maxFaces = 1;
   StartSearchSettings starts;

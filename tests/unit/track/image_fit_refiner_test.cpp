@@ -445,6 +445,15 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   EXPECT_EQ(tried, 2);
   EXPECT_LT(accepted.confidence, 0.5);
   EXPECT_GT(error(accepted), 0.5);
+  // A box whose start leaves the image is passed over; with nothing else, its error is thrown.
+  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  FaceBox outside = face;
+  outside.box.x += 20.0 * scene.image.cols;
+  const FitResult afterOutside =
+      fitFromBestFace(fitter, model, scene.image, {outside, face}, search, &tried);
+  EXPECT_EQ(tried, 2);
+  EXPECT_LT(error(afterOutside), 0.1);
+  EXPECT_THROW(fitFromBestFace(fitter, model, scene.image, {outside}, search), InputError);
   // Without a verdict the first face's fit is kept.
   search.accepted = {};
   fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
