@@ -54,24 +54,10 @@ FitState offsetStart(const ClmModel& model, const Fitter& fitter, const FitState
 
 }  // namespace
 
-ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg) {
+ImageFitSettings imageFitSettings(const FaceSearchSettings& search, double verticalFovDeg) {
   ImageFitSettings settings;
-  settings.fit = tracker.fit;
-  settings.detector = tracker.detector;
-  settings.startSearch = tracker.startSearch;
+  static_cast<FaceSearchSettings&>(settings) = search;
   settings.verticalFovDeg = verticalFovDeg;
-  settings.refine = tracker.refine;
-  settings.facesTried = tracker.facesTried;
-  settings.minCheckProbability = tracker.minCheckProbability;
-  settings.tiltSteps = tracker.tiltSteps;
-  settings.tiltStepDeg = tracker.tiltStepDeg;
-  settings.widerSearchBelow = tracker.widerSearchBelow;
-  settings.viewSearchProbability = tracker.viewSearchProbability;
-  settings.viewSearchMargin = tracker.viewSearchMargin;
-  settings.widerSearch = tracker.widerSearch;
-  settings.refineRuns = tracker.refineRuns;
-  settings.refineSpread = tracker.refineSpread;
-  settings.refineRunsBelow = tracker.refineRunsBelow;
   return settings;
 }
 

@@ -21,7 +21,7 @@
 #include "core/fit/fitter.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/model/clm_model.hpp"
-#include "core/track/tracker.hpp"
+#include "core/track/face_search_settings.hpp"
 
 namespace clm3d {
 
@@ -31,50 +31,28 @@ namespace clm3d {
 FitState stateFromPointsFile(const ClmModel& model, const Camera& camera,
                              const std::filesystem::path& path);
 
-struct ImageFitSettings {
-  FitSettings fit;
-  DetectorKind detector = DetectorKind::Cascade;
+// A still image's fit: how its face is found and fitted (FaceSearchSettings, every field; the
+// tracker shares them) and what only a photo has: its camera, the rejected fits' points, and the
+// start offsets of failure-detection experiments.
+struct ImageFitSettings : FaceSearchSettings {
   double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every image
-  // Starts searched around the detector's (not around given points): TrackerSettings::startSearch.
-  StartSearchSettings startSearch = TrackerSettings{}.startSearch;
   // Failure-detection experiments: every start moved by this share of its inter-ocular distance
   // in a direction drawn per image (seeded by the image's stem and startOffsetSeed), so that a
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
   double startOffset = 0.0;
   std::uint64_t startOffsetSeed = 1;
-  // Apply the model's point refiner (ClmModel::refiner, when it has one) to the fitted points.
-  bool refine = true;
-  // From the detector: while the check of the refined points (a model trained with photos) gives
-  // a probability below minCheckProbability, the next detected face is searched, up to facesTried
-  // faces, and the most confident fit kept (TrackerSettings::facesTried).
-  int facesTried = TrackerSettings{}.facesTried;
-  double minCheckProbability = TrackerSettings{}.minCheckProbability;
   // A fit whose check probability stays below minCheckProbability is Rejected and its points are
   // not written, as a tracker does not report such a frame as tracked; true writes them all the
   // same (the status stays Rejected).
   bool keepRejected = false;
-  // Tilted faces searched while no fit passes the check (TrackerSettings::tiltSteps).
-  int tiltSteps = TrackerSettings{}.tiltSteps;
-  double tiltStepDeg = TrackerSettings{}.tiltStepDeg;
-  // Fits the check is unsure of searched again, wider (TrackerSettings::widerSearchBelow).
-  double widerSearchBelow = TrackerSettings{}.widerSearchBelow;
-  // Fits searched again from the neighbouring views (TrackerSettings::viewSearchProbability).
-  double viewSearchProbability = TrackerSettings{}.viewSearchProbability;
-  double viewSearchMargin = TrackerSettings{}.viewSearchMargin;
-  StartSearchSettings widerSearch = TrackerSettings{}.widerSearch;
-  // Runs of the refiner averaged for the kept fit, their spread, and the check probability below
-  // which they are made (TrackerSettings::refineRuns, refineSpread, refineRunsBelow).
-  int refineRuns = TrackerSettings{}.refineRuns;
-  double refineSpread = TrackerSettings{}.refineSpread;
-  double refineRunsBelow = TrackerSettings{}.refineRunsBelow;
 
   bool operator==(const ImageFitSettings&) const = default;
 };
 
-// The settings of a still image's fit from the tracker's search options (the search, detector,
-// start grid and refiner switch of `clm3d fit`, `clm3d batch` and the studio) and the camera's
-// field of view.
-ImageFitSettings imageFitSettings(const TrackerSettings& tracker, double verticalFovDeg);
+// The settings of a still image's fit from the options a user gave (the face search's part of the
+// tracker's settings: `clm3d fit`, `clm3d batch` and the studio read them from one options table)
+// and the camera's field of view.
+ImageFitSettings imageFitSettings(const FaceSearchSettings& search, double verticalFovDeg);
 
 // Rejected: the search ran, but the model's point check (a model trained with photos) gives its
 // points a probability below ImageFitSettings::minCheckProbability: they are probably not on the

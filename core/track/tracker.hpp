@@ -18,6 +18,7 @@
 #include "core/detect/start_search.hpp"
 #include "core/fit/fitter.hpp"
 #include "core/refine/descent_refinement.hpp"
+#include "core/track/face_search_settings.hpp"
 #include "core/track/track_smoother.hpp"
 #include "core/track/track_table.hpp"
 
@@ -25,52 +26,10 @@ namespace clm3d {
 
 class VideoReader;
 
-struct TrackerSettings {
-  FitSettings fit;
-  DetectorKind detector = DetectorKind::Cascade;
-  // Where a detected face is searched from: the detector's start and a grid of moved copies, the
-  // most confident fit kept (core/detect/start_search.hpp). One step of 0.10 eye distances (9
-  // starts) was chosen on 100 LFPW training photos held out of the model: mean error from the
-  // detector 0.076 -> 0.070 (fastncc), 0.097 -> 0.087 (rlms); steps of 0.15 or 0.20, two steps, and
-  // rescaled starts did no better (docs/initialisation.md). Used by `clm3d fit` and by the tracker
-  // on the frames it detects. The grid is searched only when the start's own fit has a confidence
-  // below 0.9999 (for a model trained with photos, the point check's probability, which is above
-  // that for about three photos in four): on the 100 held-out photos the median fit went from 35-40
-  // to 11.7 ms and the mean error from 0.0426 to 0.0430 (docs/real-faces.md#time-a-photo).
-  StartSearchSettings startSearch{1, 0.10, {}, 0.9999};
-  // The detector's faces searched, best first, until one's fit does not fail: a false detection
-  // ranked first (a mouth, a pattern on a shirt) or a second person no longer costs the face. On
-  // the LFPW photo sequences a frame of image_0016 was lost to the other person's box
-  // (docs/initialisation.md). One face loop for both (fitFromBestFace): the tracker judges each fit
-  // as it judges a frame, `clm3d fit` by the point refiner's check (without a check, whose
-  // confidence would tell a wrong fit, it searches the best face only); the first fit that passes
-  // is kept, or else the most confident. 1 = the best face only.
-  int facesTried = 3;
-  // Tilted faces (`clm3d fit`): when no upright face's fit passes the point refiner's check (or no
-  // face is found), the detector runs on copies of the image turned by +-tiltStepDeg, +-2
-  // tiltStepDeg, ... (tiltSteps each way, nearest first) and searches their faces from starts
-  // tilted with them, until a fit passes (FaceDetector::detectTurned). The detectors find faces
-  // within about 15 degrees of upright. 0 = off.
-  int tiltSteps = 2;
-  double tiltStepDeg = FaceSearch{}.tiltStepDeg;
-  // Unsure fits (`clm3d fit`): when the kept fit's check probability is below this, it is searched
-  // again from the grid of widerSearch around it (moved and rescaled copies of it), and the more
-  // confident fit kept (FaceSearch::widerBelow): a face the detector boxed too small or too large.
-  // On 100 LFPW training photos held out of the model, with every detector start rescaled by 1.3
-  // or 1 / 1.3, the mean error went from 0.069 to 0.054 at 0.97 (0.059 at 0.9); from the
-  // detector's own starts, 0.0458 to 0.0456 (docs/real-faces.md). 0 = never.
-  double widerSearchBelow = 0.97;
-  StartSearchSettings widerSearch = FaceSearch{}.wider;
-  // `clm3d fit`: the kept fit's points are refined this many times, from themselves and from
-  // copies moved around them, and the runs averaged (RefinerStarts; about 1 ms a run). The
-  // tracker refines once.
-  int refineRuns = 9;
-  // How far those copies are moved, in eye distances (RefinerStarts::spread).
-  double refineSpread = RefinerStarts{}.spread;
-  // Those runs are made only when the kept fit's check probability is below this: a fit the check
-  // doubts. With the start grid's 0.9999 on the 100 held-out photos: median fit 11.7 -> 3.5-4.2 ms,
-  // mean error 0.0430 -> 0.0429 (docs/real-faces.md#time-a-photo). 0 = always.
-  double refineRunsBelow = 0.9999;
+// The tracker's settings: how a face is found and fitted in one image (FaceSearchSettings, shared
+// with a still image's fit; the tracker reads the fields that struct names as read by both) and
+// the tracker's own: failure thresholds, motion, view search, smoothing, faces.
+struct TrackerSettings : FaceSearchSettings {
   // A confidence below this marks the frame as failed. Two scales: template optimisers report a
   // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
   // a probability that the points are right. The tracker uses the one matching its optimiser.
@@ -103,36 +62,18 @@ struct TrackerSettings {
   // margin: a head turning past a view's range is caught by the next view before it is lost.
   // 0 switches the search off.
   double viewSearchConfidence = 0.7;
-  // The same for rlms, on the experts' scale; off by default. Different views' experts do not
-  // score on one scale, and on franck.mp4 (a frontal talking face whose frames score 0.45-0.6)
-  // a search at 0.55 let a neighbouring view win on noise every few hundred frames and walk the
-  // fit into a +-60 degree view (117-225 such frames, the points collapsing sideways); off, none.
-  // On procedural heads turning to +-80 degrees the rlms error at 30-60 degrees was 0.112 / 0.107
-  // off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
+  // The same for rlms, on the experts' scale; off by default (with a model whose views are
+  // calibrated, FaceSearchSettings::viewSearchProbability takes over from both). Different views'
+  // experts do not score on one scale, and on franck.mp4 (a frontal talking face whose frames score
+  // 0.45-0.6) a search at 0.55 let a neighbouring view win on noise every few hundred frames and
+  // walk the fit into a +-60 degree view (117-225 such frames, the points collapsing sideways);
+  // off, none. On procedural heads turning to +-80 degrees the rlms error at 30-60 degrees was
+  // 0.112 / 0.107 off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
   double viewSearchExpertConfidence = 0.0;
-  // With a model whose views are calibrated (ViewModel::calibration, models trained with photos
-  // since format 7) the two above give way to this: a fit whose calibrated probability
-  // (FitResult::viewProbability) is below it is also searched from the neighbouring views, and the
-  // most probable kept, in `clm3d track` and `clm3d fit` alike (searchNeighbouringViews). The
-  // calibration puts a side view's score and a frontal one's on one scale, which the raw responses
-  // are not. 0, the default, switches it off: with the real-faces model trained with
-  // --calibrate-views (side views' ROC areas 0.64-0.78), the search at 0.9 took the error over the
-  // face box on 5 LFPW photos turned -80..80 degrees from 0.035 to 0.045 at |yaw| 0-30 and from
-  // 0.058 to 0.068 at 30-60 (docs/fitting.md#views-on-one-scale).
-  double viewSearchProbability = 0.0;
-  double viewSearchMargin = 0.02;  // on any of the scales
   // Temporal smoothing of the written points (off by default). Only the rows' points are
   // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
   // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
   SmoothingSettings smoothing;
-  // Apply the model's point refiner (ClmModel::refiner, learnt from annotated photos; models
-  // without photos have none) to every search's points (core/refine/refined_fit.hpp). The next
-  // frame still starts from the fitted 3D state.
-  bool refine = true;
-  // With a refiner that has a check (models trained with photos since format 5), a frame fails
-  // when the check's probability that its refined points are right is below this; the search's
-  // confidence thresholds above are then not applied.
-  double minCheckProbability = 0.5;
   // Faces tracked at once (`clm3d track --faces`, the studio's "Faces to track"): 1 = one face
   // (trackVideo, a tracks table without a face column), N = at most N, 0 = every face
   // (trackVideoFaces, core/track/multi_face_tracker.hpp). A Tracker follows one face and does not
