@@ -1,9 +1,9 @@
 #include "core/demo/demo_pipeline.hpp"
 
 #include <iomanip>
-#include <mutex>
 #include <sstream>
 
+#include "core/common/job_progress.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/demo/procedural_heads.hpp"
 #include "core/geometry/projection.hpp"
@@ -83,8 +83,7 @@ DemoRenders renderDemoViews(const std::vector<SynthHead>& heads, int size, int t
   made.renders.resize(static_cast<std::size_t>(jobs));
   made.threads = workerCount(headCount, threads);
   fs::create_directories(rendersDir);
-  std::mutex doneMutex;
-  int done = 0;
+  JobProgress done(progress, jobs, {});
   parallelFor(headCount, threads, [&](int head) {
     const SynthHead& subject = heads[static_cast<std::size_t>(head)];
     OffscreenRenderer renderer(subject.mesh, RenderOptions{2});
@@ -94,12 +93,7 @@ DemoRenders renderDemoViews(const std::vector<SynthHead>& heads, int size, int t
           rendersDir / ("head-" + std::to_string(head + 1) + "_" + demoViewName(view));
       made.renders[static_cast<std::size_t>(head * viewCount + v)] =
           renderView(renderer, subject, view, size, stem);
-      double fraction = 0.0;
-      {
-        std::lock_guard lock(doneMutex);
-        fraction = static_cast<double>(++done) / jobs;
-      }
-      if (progress) progress(fraction, {});
+      done.finished();
     }
   });
   return made;

@@ -1,12 +1,12 @@
 #include "core/train/model_adaptation.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "core/common/error.hpp"
+#include "core/common/job_progress.hpp"
 #include "core/common/option_table.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
@@ -189,7 +189,7 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
   std::vector<char> expertAdapted(jobs.size(), 0), templateAdapted(jobs.size(), 0);
   const int regionSize = settings.patchSize + 2 * settings.expertRadius;
   const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
-  std::atomic<int> done{0};
+  JobProgress done(progress, static_cast<int>(jobs.size()), "experts", 0.5, 1.0);
   parallelFor(
       static_cast<int>(jobs.size()), settings.threads,
       [&](int j) {
@@ -202,8 +202,7 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
         for (const PhotoSample* sample : inView[static_cast<std::size_t>(job.view)]) {
           if (sample->patches.visible[static_cast<std::size_t>(landmark)]) with.push_back(sample);
         }
-        const int finished = ++done;
-        if (progress) progress(0.5 + 0.5 * finished / static_cast<double>(jobs.size()), "experts");
+        done.finished();
         if (with.empty()) return;
         // The template mean: the general mean counts as priorRegions patches.
         const int pixels = patches.patchPixels();

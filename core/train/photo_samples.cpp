@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -12,6 +11,7 @@
 #include <utility>
 
 #include "core/common/error.hpp"
+#include "core/common/job_progress.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
@@ -207,11 +207,8 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
   std::array<std::vector<Frame>, 2> frames;  // per copy (as it is, mirrored), per photo
   frames[0].resize(photos.size());
   frames[1].resize(photos.size());
-  std::atomic<int> done{0};
-  const auto report = [&](double share) {
-    const int finished = ++done;
-    if (progress) progress(share * finished / count, "photos");
-  };
+  // Each photo is finished twice: placed (1), then sampled (3).
+  JobProgress done(progress, 2 * count, "photos");
 
   // 1. Each photo's pose from its own points, and so its view and its mirror image's.
   parallelFor(count, settings.threads, [&](int index) {
@@ -239,7 +236,7 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
       placement.rollDeg = frames[0][k].rollDeg;
       if (frames[0][k].view < 0) placement.skipped = frames[0][k].why;
     }
-    report(0.5);
+    done.finished();
   });
 
   // 2. Which copies join their views: not those whose view is a mirrored one (the mirror image
@@ -298,7 +295,7 @@ std::vector<PhotoSample> preparePhotoSamples(const std::vector<TrainingPhoto>& p
       }
     }
     images[k].release();
-    report(1.0);
+    done.finished();
   });
 
   std::vector<PhotoSample> samples;

@@ -1,13 +1,13 @@
 #include "core/train/texture_training.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
 
 #include "core/common/error.hpp"
+#include "core/common/job_progress.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/render/offscreen_renderer.hpp"
@@ -100,7 +100,7 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
   }
   const int regionSize = settings.patchSize + 2 * settings.expertRadius;
   const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
-  std::atomic<int> done{0};
+  JobProgress done(progress, static_cast<int>(jobs.size()), "experts");
   parallelFor(static_cast<int>(jobs.size()), settings.threads, [&](int j) {
     if (cancel) cancel->throwIfCancelled();
     const Job& job = jobs[static_cast<std::size_t>(j)];
@@ -150,8 +150,7 @@ void trainExperts(std::vector<ViewSamples>& collected, std::vector<ViewModel>& m
     expertSettings.seed = mixKey(settings.seed, static_cast<std::uint64_t>(j));
     patches.experts[static_cast<std::size_t>(job.entry)] =
         trainPatchExpert(regions, expertSettings);
-    const int finished = ++done;
-    if (progress) progress(static_cast<double>(finished) / jobs.size(), "experts");
+    done.finished();
   });
 }
 
@@ -264,7 +263,7 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
 
   // Workers take whole subjects, so each renderer (costly to create) draws all of its views.
   const int totalRenders = subjectCount * static_cast<int>(rendered.size()) * samplesPerView;
-  std::atomic<int> done{0};
+  JobProgress done(progress, totalRenders, "rendering", 0.0, experts ? 0.8 : 0.9);
   parallelFor(subjectCount, settings.threads, [&](int subject) {
     const TrainingSubject& input = subjects[static_cast<std::size_t>(subject)];
     if (cancel) cancel->throwIfCancelled();
@@ -294,11 +293,7 @@ std::vector<ViewModel> trainTextureModels(const std::vector<TrainingSubject>& su
             target.usable[static_cast<std::size_t>(column)][li] = present && patches.visible[li];
           }
         }
-        const int finished = ++done;
-        if (progress) {
-          progress(static_cast<double>(finished) / totalRenders * (experts ? 0.8 : 0.9),
-                   "rendering");
-        }
+        done.finished();
       }
     }
   });

@@ -1,7 +1,6 @@
 #include "core/train/view_calibration.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -11,6 +10,7 @@
 #include <utility>
 
 #include "core/common/error.hpp"
+#include "core/common/job_progress.hpp"
 #include "core/common/logistic_curve.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
@@ -259,15 +259,13 @@ std::vector<ViewCalibrationRow> calibrateViews(ClmModel& model,
   }
 
   std::vector<std::vector<Search>> found(jobs.size());
-  std::atomic<int> done{0};
+  JobProgress done(progress, static_cast<int>(jobs.size()), "calibration");
   parallelFor(static_cast<int>(jobs.size()), settings.threads, [&](int j) {
     if (cancel) cancel->throwIfCancelled();
     const auto [k, key] = jobs[static_cast<std::size_t>(j)];
     found[static_cast<std::size_t>(j)] =
         searchFace(model, layouts, photos[static_cast<std::size_t>(k)], settings, key);
-    const int finished = ++done;
-    if (progress)
-      progress(static_cast<double>(finished) / static_cast<double>(jobs.size()), "calibration");
+    done.finished();
   });
 
   // The curves: per pooled view, else per yaw, else over all views.

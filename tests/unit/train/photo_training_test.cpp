@@ -6,8 +6,12 @@
 // came from. Bad photo sources fail with the file named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <opencv2/core.hpp>
+#include <string_view>
+#include <vector>
 
 #include "core/common/error.hpp"
 #include "core/dataset/manifest.hpp"
@@ -164,7 +168,19 @@ TEST(PhotoTraining, PhotosJoinTheViewNearestTheirPose) {
 TEST(PhotoTraining, ModelTrainedWithPhotosHasExpertsAndSaysSo) {
   PhotoFixture fixture;
   TrainSettings s = photoSettings();
-  const ClmModel model = trainFromManifest(fixture.manifest, s, "test");
+  std::mutex mutex;
+  std::vector<double> fractions;
+  const ClmModel model =
+      trainFromManifest(fixture.manifest, s, "test", [&](double fraction, std::string_view) {
+        const std::lock_guard lock(mutex);
+        fractions.push_back(fraction);
+      });
+  // Progress from two worker threads only rises, to 1 (the photos' stage once reported up to
+  // twice its share, and parallel stages reported out of order).
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_GE(fractions.front(), 0.0);
+  EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
   EXPECT_NE(model.provenance.notes.find("3 photo samples from 2 annotated photos"),
             std::string::npos)
       << model.provenance.notes;
