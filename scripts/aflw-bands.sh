@@ -4,8 +4,9 @@
 # the 1,200 AFLW test faces (400 per |yaw| band), scored by `clm3d eval-points` against the AFLW
 # 21-point truth on the points the schemes share, per |yaw| band of the set's index.csv: faces
 # fitted and the mean error over the truth's face box (sqrt(w*h) of its visible points), as
-# ../shared/tools/score_aflw21.py scores them. With LFPW=1 also the LFPW test photos, the box that
-# of the 68-point truth and each photo's yaw that of the model fitted to its truth.
+# ../shared/tools/score_aflw21.py scores them; then the same on the faces both tools fitted, with
+# and without the ear lobes (which dlib does not predict). With LFPW=1 also the LFPW test photos,
+# the box that of the 68-point truth and each photo's yaw that of the model fitted to its truth.
 #
 # Usage: scripts/aflw-bands.sh MODEL [OUT]   (default OUT aflw-bands-out; reruns skip what exists)
 # Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
@@ -62,6 +63,24 @@ done
   --band-table "$OUT/bands.md" > /dev/null
 echo "== side by side ($OUT/bands.md)"
 cat "$OUT/bands.md"
+
+# Where the gap is: the same faces (those both tools fitted: clm3d fits hard faces dlib does not
+# find), then also without the ear lobes (thesis25 19 and 25: dlib's 68 points have none, so
+# dlib is never scored on them).
+"$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d" --label clm3d \
+  --pred-dir "$OUT/dlib" --label dlib --poses "$AFLW/index.csv" --same-faces \
+  --band-table "$OUT/bands-same.md" > /dev/null
+"$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d" --label clm3d \
+  --pred-dir "$OUT/dlib" --label dlib --poses "$AFLW/index.csv" --same-faces \
+  --points 1-18,20-24 --band-table "$OUT/bands-same-no-ears.md" > /dev/null
+"$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d" --label clm3d \
+  --poses "$AFLW/index.csv" --points 1-18,20-24 --band-table "$OUT/bands-no-ears.md" > /dev/null
+echo "== the faces both fitted ($OUT/bands-same.md)"
+cat "$OUT/bands-same.md"
+echo "== the faces both fitted, without the ear lobes ($OUT/bands-same-no-ears.md)"
+cat "$OUT/bands-same-no-ears.md"
+echo "== clm3d on all its faces, without the ear lobes ($OUT/bands-no-ears.md)"
+cat "$OUT/bands-no-ears.md"
 
 # 4. LFPW test (68-point truth): the box of the 68 points, yaw of the model fitted to the truth.
 if [[ ${LFPW:-0} == 1 && -d $LFPW_TEST ]]; then

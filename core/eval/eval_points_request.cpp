@@ -53,6 +53,11 @@ std::vector<Option<R>> makeOptions() {
           commandOption("threshold", "Error at which a point counts as found", 1e-6, 100.0),
           &R::threshold),
       flagOption<R>(commandOption("json", "Print the report as JSON instead of text"), &R::json),
+      flagOption<R>(commandOption("same-faces",
+                                  "With --truth-dir: score only the images that every --pred-dir "
+                                  "fitted (a prediction its summary.csv does not mark rejected), "
+                                  "so that methods are compared on the same faces"),
+                    &R::sameFaces),
       flagOption<R>(commandOption("roc",
                                   "With --pred-dir folders written by clm3d fit --images: how "
                                   "well the fits' confidence (their summary.csv) tells right fits "
@@ -109,6 +114,9 @@ void checkCombination(const R& args) {
   if (files && !args.bandTable.empty()) {
     throw UsageError("--band-table", "the band table goes with --truth-dir");
   }
+  if (files && args.sameFaces) {
+    throw UsageError("--same-faces", "the same faces go with --truth-dir");
+  }
   if (files && !args.csv.empty()) {
     throw UsageError("--csv", "the per-image table goes with --truth-dir");
   }
@@ -118,7 +126,7 @@ CommandReport runFolders(const R& args, const Scheme& scheme, const std::vector<
   CommandReport output;
   output.notesToStderr = args.json;
   auto report = evaluatePointFolders(args.truthDir, args.predictionDirs, args.labels, scheme,
-                                     selected, args.threshold);
+                                     selected, args.threshold, args.sameFaces);
   report.offFaceAbove = args.offFaceAbove;
   const std::vector<double> edges = parseBandEdges(args.yawBands);
   if (!args.poses.empty()) {

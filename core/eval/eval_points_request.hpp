@@ -26,6 +26,7 @@ struct EvalPointsRequest {
   double threshold = 0.18;
   bool json = false;
   bool roc = false;
+  bool sameFaces = false;
   double wrongAbove = 0.15;
   double offFaceAbove = 0.08;
   std::filesystem::path poses, model;

@@ -64,12 +64,33 @@ std::vector<std::string> rejectedStems(const fs::path& folder) {
   return stems;
 }
 
+// The folder's prediction for `stem`: STEM.pts, .ljson or .csv, the first found.
+std::optional<fs::path> predictionFile(const fs::path& folder, const std::string& stem) {
+  std::error_code error;
+  for (const char* extension : {".pts", ".ljson", ".csv"}) {
+    const fs::path candidate = folder / (stem + extension);
+    if (fs::is_regular_file(candidate, error)) return candidate;
+  }
+  return std::nullopt;
+}
+
+// Whether every folder has a prediction for `stem` that its summary does not mark rejected.
+bool fittedByAll(const std::vector<fs::path>& folders,
+                 const std::vector<std::vector<std::string>>& rejected, const std::string& stem) {
+  for (std::size_t m = 0; m < folders.size(); ++m) {
+    if (!predictionFile(folders[m], stem)) return false;
+    if (std::find(rejected[m].begin(), rejected[m].end(), stem) != rejected[m].end()) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
                                        const std::vector<fs::path>& predictionFolders,
                                        const std::vector<std::string>& labels, const Scheme& scheme,
-                                       const std::vector<int>& selected, double threshold) {
+                                       const std::vector<int>& selected, double threshold,
+                                       bool sameFaces) {
   if (!labels.empty() && labels.size() != predictionFolders.size()) {
     throw InputError(std::to_string(labels.size()) + " labels for " +
                      std::to_string(predictionFolders.size()) + " prediction folders");
@@ -92,6 +113,19 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
   if (error) throwInputError(truthFolder, "cannot list the folder: " + error.message());
   if (truthFiles.empty()) throwInputError(truthFolder, "no .pts truth file in the folder");
   std::sort(truthFiles.begin(), truthFiles.end());
+  if (sameFaces) {
+    std::vector<std::vector<std::string>> rejected;
+    for (const fs::path& folder : predictionFolders) rejected.push_back(rejectedStems(folder));
+    const auto before = truthFiles.size();
+    std::erase_if(truthFiles, [&](const fs::path& file) {
+      return !fittedByAll(predictionFolders, rejected, file.stem().string());
+    });
+    report.sameFaces = true;
+    report.notFittedByAll = static_cast<int>(before - truthFiles.size());
+    if (truthFiles.empty()) {
+      throwInputError(truthFolder, "no truth image that every prediction folder fitted");
+    }
+  }
 
   const auto [a, b] = scheme.normalisationPair();
   std::vector<LandmarkSet> truths;
@@ -124,14 +158,7 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
                                 rejected.end());
       ++method.images;
       method.truePoints += report.truePoints[i];
-      std::optional<fs::path> file;
-      for (const char* extension : {".pts", ".ljson", ".csv"}) {
-        const fs::path candidate = method.folder / (report.stems[i] + extension);
-        if (fs::is_regular_file(candidate, error)) {
-          file = candidate;
-          break;
-        }
-      }
+      const std::optional<fs::path> file = predictionFile(method.folder, report.stems[i]);
       method.files.push_back(file);
       if (!file) {
         ++method.missing;
@@ -177,6 +204,10 @@ std::string formatPointFolderText(const PointFolderReport& report) {
     for (const int i : report.selected) out << ' ' << i + 1;
   }
   out << ")\n";
+  if (report.sameFaces) {
+    out << "same faces: the " << report.stems.size() << " images every method fitted ("
+        << report.notFittedByAll << " that one or more did not fit left out)\n";
+  }
   std::map<std::string, int> schemes;
   for (const std::string& name : report.truthSchemes) ++schemes[name];
   if (schemes.size() != 1 || schemes.begin()->first != report.schemeName) {
@@ -243,6 +274,7 @@ std::string formatPointFolderJson(const PointFolderReport& report) {
                    {"points", points},
                    {"images", report.stems.size()},
                    {"methods", methods}};
+  if (report.sameFaces) document["not_fitted_by_all"] = report.notFittedByAll;
   if (!report.bandEdges.empty()) {
     document["yaw_source"] = report.yawSource;
     document["band_edges"] = report.bandEdges;

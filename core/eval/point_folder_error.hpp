@@ -73,6 +73,11 @@ struct PointFolderReport {
   std::vector<double> yawDeg;
   std::vector<double> bandEdges;
   std::string yawSource;
+  // With sameFaces, only the truth images every method fitted are scored (a prediction file that
+  // its folder's summary.csv does not mark rejected), so that methods that fit different faces
+  // are compared on the same ones; notFittedByAll counts the images left out.
+  bool sameFaces = false;
+  int notFittedByAll = 0;
   // The error over the face box above which a fitted face counts as off the face in the bands
   // (0.08: the line the views' checks learn right from wrong by, docs/training.md).
   double offFaceAbove = 0.08;
@@ -90,7 +95,8 @@ struct PointFolderReport {
 PointFolderReport evaluatePointFolders(const std::filesystem::path& truthFolder,
                                        const std::vector<std::filesystem::path>& predictionFolders,
                                        const std::vector<std::string>& labels, const Scheme& scheme,
-                                       const std::vector<int>& selected, double threshold = 0.18);
+                                       const std::vector<int>& selected, double threshold = 0.18,
+                                       bool sameFaces = false);
 
 // A header line, then per method: "LABEL (FOLDER): mean error E, median M over P/N images;
 // within T: F/S points (X%); missing predictions: K". Numbers locale-independent.
@@ -100,7 +106,7 @@ std::string formatPointFolderText(const PointFolderReport& report);
 // "mean_error", "median_error", "mean_box_error", "true_points", "found_points", "found_share"}]}
 // and, with yaw bands, "yaw_source", "band_edges" and per method "bands": [{"min_abs_yaw",
 // "max_abs_yaw", "faces", "fitted", "mean_box_error", "mean_error", "true_points",
-// "found_points", "found_share"}]. NaN is null.
+// "found_points", "found_share"}]; with sameFaces, "not_fitted_by_all". NaN is null.
 std::string formatPointFolderJson(const PointFolderReport& report);
 // One row per image and method: "image,method,status,error,max_error,true_points,scored_points,
 // found_points,inter_ocular,box_error,box_size,yaw_deg,prediction" with status ok, rejected or

@@ -218,6 +218,49 @@ TEST(EvalPointsFolderCli, ChosenPointsAndLabels) {
   EXPECT_EQ(json["points"], nlohmann::json::array({8, 11}));
 }
 
+TEST(EvalPointsFolderCli, SameFacesScoresOnlyTheImagesEveryMethodFitted) {
+  const FolderFiles f;
+  // Method A has no img3; method B's summary marks img2 rejected: only img1 is left to both.
+  test::writeFile(f.methodB / "summary.csv",
+                  "image,status\n/x/img1.jpg,ok\n/x/img2.jpg,rejected\n");
+  const auto result =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
+               " --pred-dir " + f.methodB.string() + " --same-faces");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "(1 images, scheme thesis25, all points)"))
+      << result.output;
+  EXPECT_TRUE(test::contains(result.output,
+                             "same faces: the 1 images every method fitted (2 that one or more "
+                             "did not fit left out)"))
+      << result.output;
+  // img1 alone: A off by 0.1, B by 0.05; neither has a missing prediction any more.
+  EXPECT_TRUE(test::contains(result.output, "mean error 0.1000, median 0.1000 over 1/1 images"))
+      << result.output;
+  EXPECT_TRUE(test::contains(result.output, "mean error 0.0500, median 0.0500 over 1/1 images"))
+      << result.output;
+  const auto json = nlohmann::json::parse(
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
+               " --pred-dir " + f.methodB.string() + " --same-faces --json")
+          .output);
+  EXPECT_EQ(json["images"], 1);
+  EXPECT_EQ(json["not_fitted_by_all"], 2);
+  EXPECT_EQ(json["methods"][0]["missing"], 0);
+
+  // No image fitted by all: an error naming the truth folder; with single files, a usage error.
+  fs::remove(f.methodA / "img1.pts");
+  const auto none =
+      runClm3d("eval-points --truth-dir " + f.truth.string() + " --pred-dir " + f.methodA.string() +
+               " --pred-dir " + f.methodB.string() + " --same-faces");
+  EXPECT_NE(none.exitCode, 0);
+  EXPECT_TRUE(test::contains(none.output, f.truth.string())) << none.output;
+  EXPECT_TRUE(test::contains(none.output, "no truth image that every prediction folder fitted"))
+      << none.output;
+  const auto files = runClm3d("eval-points --truth " + (f.truth / "img1.pts").string() +
+                              " --pred " + (f.methodB / "img1.ljson").string() + " --same-faces");
+  EXPECT_NE(files.exitCode, 0);
+  EXPECT_TRUE(test::contains(files.output, "--same-faces")) << files.output;
+}
+
 TEST(EvalPointsFolderCli, BadInputNamesTheFileAndMixedModesAreUsageErrors) {
   const FolderFiles f;
   LandmarkSet ten(10, 2);
