@@ -143,6 +143,9 @@ CommandReport runCorrectionBench(const CorrectionBenchRequest& args,
     results.push_back(benchmarkSequence(general, args.model, sequence, settings, progress, cancel));
   }
   CommandReport report;
+  for (const SequenceBenchmark& result : results) {
+    if (!result.unreadable.empty()) report.warnings += "warning: " + result.unreadable + "\n";
+  }
   report.text = formatCorrectionBenchmark(results, settings.annotator);
   if (!args.csv.empty()) {
     writeTextAtomically(args.csv, correctionBenchmarkCsv(results));

@@ -171,9 +171,11 @@ SequenceBenchmark benchmarkSequence(const ClmModel& general,
 
   // The first track: every frame with the general model, no keyframes.
   TrackTable track = truth;
+  TrackSummary firstTrack;
   track.rows = trackThroughKeyframes(sequence.video, general, settings.tracker,
                                      GroundTruthSet::fromTrack(truth, result.frames),
-                                     stage("first track"), cancel);
+                                     stage("first track"), cancel, &firstTrack);
+  result.unreadable = unreadableFramesWarning(sequence.video, firstTrack);
   result.startError = evaluateSequence(truth, track, scheme).summary.mean;
 
   for (const AnnotatorStrategy strategy : settings.strategies) {

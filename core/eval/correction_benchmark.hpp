@@ -46,7 +46,10 @@ struct SequenceBenchmark {
   BenchmarkSequence sequence;
   int frames = 0;                                                // frames benchmarked
   double startError = std::numeric_limits<double>::quiet_NaN();  // first track, mean eq. 5.1
-  std::vector<StrategyResult> strategies;                        // in the settings' order
+  // The frames of the sequence its video could not give (unreadableFramesWarning of the first
+  // track: rows marked unreadable, left uncorrected and scored as lost); empty when none.
+  std::string unreadable;
+  std::vector<StrategyResult> strategies;  // in the settings' order
   // review-adapt: the scored frames it never corrected, and their mean error (eq. 5.1) tracked
   // through its keyframes (trackThroughKeyframes) with the general model and with the model
   // adapted to all its corrected frames; NaN without a review-adapt run that corrected a frame.

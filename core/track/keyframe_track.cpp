@@ -10,22 +10,17 @@
 
 namespace clm3d {
 
-std::vector<TrackRow> trackThroughKeyframes(const std::filesystem::path& video,
-                                            const ClmModel& model, const TrackerSettings& settings,
-                                            const GroundTruthSet& truth,
-                                            const ProgressCallback& progress,
-                                            const CancelToken* cancel) {
+TrackSummary trackThroughKeyframes(const std::filesystem::path& video, const ClmModel& model,
+                                   const TrackerSettings& settings, const GroundTruthSet& truth,
+                                   const TrackRowSink& onRow, const PerFrame& perFrame,
+                                   const ProgressCallback& progress, const CancelToken* cancel) {
   VideoReader reader(video);
   const Camera camera =
       Camera::fromVerticalFov(reader.width(), reader.height(), kDefaultVerticalFovDeg);
   Tracker tracker(model, camera, settings);
   const int count = truth.frameCount();
-  std::vector<TrackRow> rows;
-  rows.reserve(static_cast<std::size_t>(count));
-  cv::Mat frame;
-  while (std::cmp_less(rows.size(), count) && reader.read(frame)) {
-    if (cancel != nullptr) cancel->throwIfCancelled();
-    const int f = static_cast<int>(rows.size());
+  const auto trackFrame = [&](const cv::Mat& image, int f, double timestamp,
+                              TrackSummary& summary) {
     const auto i = static_cast<std::size_t>(f);
     const TrackRow& given = truth.table.rows[i];
     std::vector<bool> present(static_cast<std::size_t>(given.points.cols()));
@@ -37,20 +32,36 @@ std::vector<TrackRow> trackThroughKeyframes(const std::filesystem::path& video,
     if (truth.keyframe[i] && presentCount > 0) {
       TrackRow row = given;
       row.frame = f;
-      rows.push_back(std::move(row));
+      if (row.success) ++summary.succeeded;
+      onRow(std::move(row));
       try {
         tracker.setState(stateFromPoints(model, camera, given.points, present));
       } catch (const InputError&) {
         tracker.reset();  // too few points to place the face: the next frame detects it
       }
-    } else {
-      TrackStep step = tracker.track(frame, f, reader.timestamp());
-      step.row.frame = f;
-      rows.push_back(std::move(step.row));
+      return;
     }
-    if (progress && count > 0) progress(static_cast<double>(f + 1) / count, "tracking");
-  }
-  if (progress) progress(1.0, "tracking");
+    TrackStep step = tracker.track(image, f, timestamp);
+    step.row.frame = f;
+    countStep(step, summary);
+    if (perFrame) perFrame(image, step, tracker);
+    onRow(std::move(step.row));
+  };
+  return trackDecodedFrames(reader, model.shape.pointCount(), trackFrame, onRow, count, "tracking",
+                            progress, cancel, count);
+}
+
+std::vector<TrackRow> trackThroughKeyframes(const std::filesystem::path& video,
+                                            const ClmModel& model, const TrackerSettings& settings,
+                                            const GroundTruthSet& truth,
+                                            const ProgressCallback& progress,
+                                            const CancelToken* cancel, TrackSummary* summary) {
+  std::vector<TrackRow> rows;
+  rows.reserve(static_cast<std::size_t>(truth.frameCount()));
+  const TrackSummary made = trackThroughKeyframes(
+      video, model, settings, truth, [&rows](TrackRow&& row) { rows.push_back(std::move(row)); },
+      {}, progress, cancel);
+  if (summary) *summary = made;
   return rows;
 }
 

@@ -377,9 +377,12 @@ TrackRow unreadableRow(int frame, double fps, int points) {
 TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep& trackFrame,
                                 const TrackRowSink& onRow, int expectedFrames,
                                 std::string_view stage, const ProgressCallback& progress,
-                                const CancelToken* cancel) {
+                                const CancelToken* cancel, int frameLimit) {
   TrackSummary summary;
   summary.declaredFrames = reader.frameCount();
+  // The frames this run covers: those declared, up to the limit.
+  if (frameLimit >= 0 && summary.declaredFrames > frameLimit) summary.declaredFrames = frameLimit;
+  const int covered = summary.declaredFrames;
   const double fps = reader.fps();  // read here: the decoder thread owns the reader below
   const auto skip = [&](int first, int count) {
     summary.unreadable.push_back({first, count});
@@ -394,6 +397,13 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
       if (cancel != nullptr) cancel->throwIfCancelled();
       const DecodedFrame* frame = frames.next();
       if (frame == nullptr) break;
+      if (frameLimit >= 0 && frame->index >= frameLimit) {
+        // Past the limit: the frames skipped before it that fall short of the limit are missing.
+        const int first = frame->index - frame->skippedBefore;
+        if (first < frameLimit) skip(first, frameLimit - first);
+        last = frameLimit - 1;
+        break;
+      }
       if (frame->skippedBefore > 0) skip(frame->index - frame->skippedBefore, frame->skippedBefore);
       last = frame->index;
       ++summary.frames;
@@ -403,9 +413,7 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
       }
     }
   }
-  if (summary.declaredFrames - (last + 1) >= kUnreadableTailMinimum) {
-    skip(last + 1, summary.declaredFrames - (last + 1));
-  }
+  if (covered - (last + 1) >= kUnreadableTailMinimum) skip(last + 1, covered - (last + 1));
   if (progress) progress(1.0, stage);
   return summary;
 }

@@ -6,6 +6,7 @@
 #include "core/detect/initialisation.hpp"
 #include "core/model/model_file.hpp"
 #include "core/review/review_overlay.hpp"
+#include "core/track/keyframe_track.hpp"
 #include "core/track/multi_face_tracker.hpp"
 #include "core/track/retrack.hpp"
 #include "core/track/video_adaptation.hpp"
@@ -119,8 +120,13 @@ JobRunner::Job adaptJob(std::filesystem::path video, std::filesystem::path model
     const auto tracking = [&](double fraction, std::string_view stage) {
       progress(0.6 + 0.4 * fraction, stage);
     };
-    trackVideo(video, *adapted, settings, outcome->table, recordFits(outcome->fits, 0), tracking,
-               &cancel);
+    // Through the keyframes, as the correction benchmark measures it: after each corrected frame
+    // the adapted model goes on from the corrected points, not from its own track.
+    outcome->table.landmarkCount = adapted->shape.pointCount();
+    trackThroughKeyframes(
+        video, *adapted, settings, truth,
+        [&rows = outcome->table.rows](TrackRow&& row) { rows.push_back(std::move(row)); },
+        recordFits(outcome->fits, 0), tracking, &cancel);
     outcome->fits.resize(outcome->table.rows.size());
     cancel.throwIfCancelled();
     saveModel(*adapted, out);

@@ -71,14 +71,16 @@ struct AdaptOutcome {
   std::shared_ptr<const ClmModel> model;  // the adapted model
   std::filesystem::path saved;            // where it was written: empty unless the job finished
   AdaptationSummary summary;
-  TrackTable table;  // every frame tracked with the adapted model
+  TrackTable
+      table;  // every frame: the keyframes as given, the others tracked with the adapted model
   std::vector<std::optional<FrameFit>> fits;
 };
 
 // Adapts the model (`model`, or when null the one loaded from `modelPath`) to the keyframes of
 // `truth` (core/track/video_adaptation; `truthPath` is recorded as where they came from), tracks
-// every frame of `video` with the adapted model, and only then writes it to `out` (atomically):
-// a cancelled or failed job writes nothing.
+// `video` through those keyframes with the adapted model (trackThroughKeyframes: each corrected
+// frame restarts the track from its points), and only then writes it to `out` (atomically): a
+// cancelled or failed job writes nothing.
 JobRunner::Job adaptJob(std::filesystem::path video, std::filesystem::path modelPath,
                         std::shared_ptr<const ClmModel> model, GroundTruthSet truth,
                         std::filesystem::path truthPath, AdaptSettings adapt,

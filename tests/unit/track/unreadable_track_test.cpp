@@ -5,12 +5,15 @@
 // read are tracked as before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/common/error.hpp"
+#include "core/track/ground_truth.hpp"
+#include "core/track/keyframe_track.hpp"
 #include "core/track/track_table_writer.hpp"
 #include "core/track/tracker.hpp"
 #include "tests/support/test_support.hpp"
@@ -78,11 +81,17 @@ TEST(UnreadableTrack, ATruncatedVideosMissingFramesAreRowsMarkedUnreadable) {
                          "-29 are unreadable (no image: marked unreadable in the tracks)");
 }
 
-TEST(UnreadableTrack, DamagedFramesInTheMiddleKeepEveryRowInItsPlace) {
-  const test::TempDir dir;
+// A 30-frame video with a stretch of bytes zeroed in its middle, written into `dir`.
+fs::path damagedInTheMiddle(const fs::path& dir) {
   test::writeNumberedVideo(dir / "whole.mkv", 30);
   const fs::path damaged = dir / "damaged.mkv";
   test::writeDamagedCopy(dir / "whole.mkv", damaged, 0.5, 3000);
+  return damaged;
+}
+
+TEST(UnreadableTrack, DamagedFramesInTheMiddleKeepEveryRowInItsPlace) {
+  const test::TempDir dir;
+  const fs::path damaged = damagedInTheMiddle(dir.path());
   const ClmModel model = test::makeTinyModel();
   const Tracked t = trackFile(damaged, model);
   ASSERT_EQ(t.table.rows.size(), 30U);
@@ -100,6 +109,56 @@ TEST(UnreadableTrack, DamagedFramesInTheMiddleKeepEveryRowInItsPlace) {
                          " could be decoded; frames " + formatFrameSpans(t.summary.unreadable)),
             std::string::npos)
       << warning;
+}
+
+// Through the keyframes (the studio's Adapt, the correction benchmark): a damaged frame in the
+// middle is a row marked unreadable in its place, so every later row stays on its own frame (the
+// loop of reads before counted rows, not frames, and shifted every row after the damage).
+TEST(UnreadableTrack, KeyframeTrackingKeepsEveryRowOnItsFrameAndStopsAtTheTruthsEnd) {
+  const test::TempDir dir;
+  const fs::path damaged = damagedInTheMiddle(dir.path());
+  const ClmModel model = test::makeTinyModel();
+  const Tracked plain = trackFile(damaged, model);
+  ASSERT_FALSE(plain.summary.unreadable.empty());
+  const int firstUnreadable = plain.summary.unreadable.front().first;
+  ASSERT_GT(firstUnreadable, 3);
+
+  GroundTruthSet truth = GroundTruthSet::fromTrack(plain.table, 30);
+  Eigen::Matrix2Xd corrected = Eigen::Matrix2Xd::Constant(2, model.shape.pointCount(), 20.0);
+  for (int k = 0; k < corrected.cols(); ++k) corrected(0, k) += k;
+  truth.setKeyframe(2, corrected);
+  std::vector<int> seen;
+  TrackTable table;
+  const TrackSummary summary = trackThroughKeyframes(
+      damaged, model, TrackerSettings{}, truth,
+      [&table](TrackRow&& row) { table.rows.push_back(std::move(row)); },
+      [&seen](const cv::Mat& frame, const TrackStep& step, Tracker&) {
+        EXPECT_EQ(test::numberOf(frame), step.row.frame);
+        seen.push_back(step.row.frame);
+      });
+  ASSERT_EQ(table.rows.size(), 30U);
+  for (int f = 0; f < 30; ++f) {
+    const TrackRow& row = table.rows[static_cast<std::size_t>(f)];
+    EXPECT_EQ(row.frame, f);
+    EXPECT_EQ(row.unreadable, plain.table.rows[static_cast<std::size_t>(f)].unreadable) << f;
+  }
+  EXPECT_EQ(summary.unreadable, plain.summary.unreadable);
+  EXPECT_TRUE(table.rows[2].points.isApprox(corrected));  // the keyframe as given
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 2), 0);  // and not tracked
+  EXPECT_EQ(static_cast<int>(seen.size()), summary.frames - 1);
+
+  // A truth shorter than the video: its frames only, nothing reported missing beyond it.
+  GroundTruthSet first(GroundTruthSet::fromTrack(plain.table, 30));
+  first.table.rows.resize(3);
+  first.keyframe.resize(3);
+  const std::vector<TrackRow> rows =
+      trackThroughKeyframes(damaged, model, TrackerSettings{}, first, {}, nullptr, nullptr);
+  TrackSummary limited;
+  trackThroughKeyframes(damaged, model, TrackerSettings{}, first, {}, nullptr, &limited);
+  EXPECT_EQ(rows.size(), 3U);
+  EXPECT_EQ(limited.frames, 3);
+  EXPECT_EQ(limited.declaredFrames, 3);
+  EXPECT_TRUE(limited.unreadable.empty());
 }
 
 TEST(UnreadableTrack, AnIntactVideoHasNoUnreadableRowAndNoStatusColumn) {
