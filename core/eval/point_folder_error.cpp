@@ -113,9 +113,10 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
   if (error) throwInputError(truthFolder, "cannot list the folder: " + error.message());
   if (truthFiles.empty()) throwInputError(truthFolder, "no .pts truth file in the folder");
   std::sort(truthFiles.begin(), truthFiles.end());
+  // Per folder, the stems its summary.csv marks rejected (read once).
+  std::vector<std::vector<std::string>> rejected;
+  for (const fs::path& folder : predictionFolders) rejected.push_back(rejectedStems(folder));
   if (sameFaces) {
-    std::vector<std::vector<std::string>> rejected;
-    for (const fs::path& folder : predictionFolders) rejected.push_back(rejectedStems(folder));
     const auto before = truthFiles.size();
     std::erase_if(truthFiles, [&](const fs::path& file) {
       return !fittedByAll(predictionFolders, rejected, file.stem().string());
@@ -152,10 +153,10 @@ PointFolderReport evaluatePointFolders(const fs::path& truthFolder,
     if (method.label.empty()) method.label = method.folder.string();
     std::vector<double> errors;
     std::vector<double> boxErrors;
-    const std::vector<std::string> rejected = rejectedStems(method.folder);
+    const std::vector<std::string>& rejectedHere = rejected[m];
     for (std::size_t i = 0; i < truths.size(); ++i) {
-      method.rejected.push_back(std::find(rejected.begin(), rejected.end(), report.stems[i]) !=
-                                rejected.end());
+      method.rejected.push_back(std::find(rejectedHere.begin(), rejectedHere.end(),
+                                          report.stems[i]) != rejectedHere.end());
       ++method.images;
       method.truePoints += report.truePoints[i];
       const std::optional<fs::path> file = predictionFile(method.folder, report.stems[i]);

@@ -382,7 +382,6 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
   summary.declaredFrames = reader.frameCount();
   // The frames this run covers: those declared, up to the limit.
   if (frameLimit >= 0 && summary.declaredFrames > frameLimit) summary.declaredFrames = frameLimit;
-  const int covered = summary.declaredFrames;
   const double fps = reader.fps();  // read here: the decoder thread owns the reader below
   const auto skip = [&](int first, int count) {
     summary.unreadable.push_back({first, count});
@@ -413,7 +412,8 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
       }
     }
   }
-  if (covered - (last + 1) >= kUnreadableTailMinimum) skip(last + 1, covered - (last + 1));
+  const int tail = summary.declaredFrames - (last + 1);
+  if (tail >= kUnreadableTailMinimum) skip(last + 1, tail);
   if (progress) progress(1.0, stage);
   return summary;
 }
