@@ -54,7 +54,6 @@ void addBatchCommand(CLI::App& root) {
       batchRequestOptions(), [fit](BatchRequest& request, const CLI::App& batch) {
         if (batch.get_subcommand("merge")->parsed()) return CommandReport();
         request.tracker = fit->tracker;
-        request.fovDeg = fit->fovDeg;
         InterruptScope interrupt;
         CliProgress progress(CliProgress::Style::Lines, request.quiet);
         RunReporter reporter;

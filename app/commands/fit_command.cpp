@@ -20,7 +20,6 @@ void addFitCommand(CLI::App& root) {
       root, "fit", "find the landmarks in one image, or in many with the model loaded once",
       fitRequestOptions(), [fit](FitRequest& request, const CLI::App&) {
         request.tracker = fit->tracker;
-        request.fovDeg = fit->fovDeg;
         std::optional<InterruptScope> interrupt;  // a batch only: one image stops at once
         if (!request.images.empty()) interrupt.emplace();
         CliProgress progress(CliProgress::Style::Lines, request.quiet);

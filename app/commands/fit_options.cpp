@@ -1,13 +1,14 @@
 #include "app/commands/fit_options.hpp"
 
 #include "app/commands/option_cli.hpp"
-#include "core/geometry/camera.hpp"
 
 namespace clm3d::cli {
 
 void addFitOptions(CLI::App& command, FitOptions& options, OptionCommand which) {
   addTableOptions(command, trackerOptions(), which, options.tracker);
-  command.add_option("--fov", options.fovDeg, "vertical field of view of the camera, degrees")
+  command
+      .add_option("--fov", options.tracker.verticalFovDeg,
+                  "vertical field of view of the camera, degrees")
       ->capture_default_str()
       ->check(CLI::Range(5.0, 150.0));
 }

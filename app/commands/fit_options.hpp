@@ -10,7 +10,6 @@
 
 #include "core/detect/face_detector.hpp"
 #include "core/fit/fitter.hpp"
-#include "core/geometry/camera.hpp"
 #include "core/model/clm_model.hpp"
 #include "core/track/tracker_options.hpp"
 
@@ -18,8 +17,7 @@ namespace clm3d::cli {
 
 struct FitOptions {
   // Filled by the table's options that the command takes (addFitOptions).
-  TrackerSettings tracker;
-  double fovDeg = kDefaultVerticalFovDeg;
+  TrackerSettings tracker;  // --fov sets tracker.verticalFovDeg
 
   FitSettings settings() const { return tracker.fit; }
   DetectorKind detectorKind() const { return tracker.detector; }

@@ -21,7 +21,6 @@ void addTrackCommand(CLI::App& root) {
       root, "track", "track the landmarks through a video", trackRequestOptions(),
       [fit](TrackRequest& request, const CLI::App&) {
         request.tracker = fit->tracker;
-        request.fovDeg = fit->fovDeg;
         InterruptScope interrupt;
         std::atomic<std::size_t> written{0};
         CliProgress progress(CliProgress::Style::Meter, request.quiet);

@@ -43,7 +43,8 @@ class VideoAnnotatorTracker final : public AnnotatorTracker {
         settings_(settings),
         cancel_(cancel) {
     const VideoReader probe(video_);
-    camera_ = Camera::fromVerticalFov(probe.width(), probe.height(), kDefaultVerticalFovDeg);
+    camera_ =
+        Camera::fromVerticalFov(probe.width(), probe.height(), settings_.tracker.verticalFovDeg);
   }
 
   SpanRetrack retrack(int /*corrected*/, const Eigen::Matrix2Xd& points,

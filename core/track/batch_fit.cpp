@@ -54,10 +54,9 @@ FitState offsetStart(const ClmModel& model, const Fitter& fitter, const FitState
 
 }  // namespace
 
-ImageFitSettings imageFitSettings(const FaceSearchSettings& search, double verticalFovDeg) {
+ImageFitSettings imageFitSettings(const FaceSearchSettings& search) {
   ImageFitSettings settings;
   static_cast<FaceSearchSettings&>(settings) = search;
-  settings.verticalFovDeg = verticalFovDeg;
   return settings;
 }
 

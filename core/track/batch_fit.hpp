@@ -35,7 +35,6 @@ FitState stateFromPointsFile(const ClmModel& model, const Camera& camera,
 // tracker shares them) and what only a photo has: its camera, the rejected fits' points, and the
 // start offsets of failure-detection experiments.
 struct ImageFitSettings : FaceSearchSettings {
-  double verticalFovDeg = kDefaultVerticalFovDeg;  // the camera of every image
   // Failure-detection experiments: every start moved by this share of its inter-ocular distance
   // in a direction drawn per image (seeded by the image's stem and startOffsetSeed), so that a
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
@@ -50,9 +49,9 @@ struct ImageFitSettings : FaceSearchSettings {
 };
 
 // The settings of a still image's fit from the options a user gave (the face search's part of the
-// tracker's settings: `clm3d fit`, `clm3d batch` and the studio read them from one options table)
-// and the camera's field of view.
-ImageFitSettings imageFitSettings(const FaceSearchSettings& search, double verticalFovDeg);
+// tracker's settings: `clm3d fit`, `clm3d batch` and the studio read them from one options table,
+// and --fov).
+ImageFitSettings imageFitSettings(const FaceSearchSettings& search);
 
 // Rejected: the search ran, but the model's point check (a model trained with photos) gives its
 // points a probability below ImageFitSettings::minCheckProbability: they are probably not on the

@@ -85,7 +85,7 @@ BatchJob makeJob(const R& args) {
 }
 
 BatchSettings makeSettings(const R& args) {
-  BatchSettings settings = batchSettings(args.tracker, args.fovDeg);
+  BatchSettings settings = batchSettings(args.tracker);
   settings.image.keepRejected = args.keepRejected;
   return settings;
 }

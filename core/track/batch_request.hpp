@@ -12,7 +12,6 @@
 
 #include "core/common/command_report.hpp"
 #include "core/common/option_table.hpp"
-#include "core/geometry/camera.hpp"
 #include "core/track/tracker_options.hpp"
 
 namespace clm3d {
@@ -27,9 +26,9 @@ struct BatchRequest {
   int slurmTasks = 0;  // --slurm N
   std::vector<std::string> sbatchArgs;
   bool noWait = false;
-  // From the tracker table's Batch options and --fov, which the CLI adds beside these.
+  // From the tracker table's Batch options and --fov (verticalFovDeg), which the CLI adds beside
+  // these.
   TrackerSettings tracker;
-  double fovDeg = kDefaultVerticalFovDeg;
 };
 
 // The options of `clm3d batch` that are not the tracker table's, in its help's order.

@@ -297,8 +297,8 @@ fs::path batchSummaryPath(const fs::path& outDir, const BatchShard& shard) {
          ("summary-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".csv");
 }
 
-BatchSettings batchSettings(const TrackerSettings& tracker, double verticalFovDeg) {
-  return {imageFitSettings(tracker, verticalFovDeg), tracker};
+BatchSettings batchSettings(const TrackerSettings& tracker) {
+  return {imageFitSettings(tracker), tracker};
 }
 
 std::map<std::string, std::string> batchOptions(const BatchJob& job,

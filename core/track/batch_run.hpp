@@ -52,7 +52,7 @@ struct BatchSettings {
 
 // Images fitted with the photo fit's part of the tracker options (imageFitSettings), videos
 // tracked with the tracker's: what `clm3d batch` runs with.
-BatchSettings batchSettings(const TrackerSettings& tracker, double verticalFovDeg);
+BatchSettings batchSettings(const TrackerSettings& tracker);
 
 // The options a batch's outputs depend on, name -> value as given on the command line: the
 // tracker options (core/track/tracker_options) of settings.track that differ from their defaults

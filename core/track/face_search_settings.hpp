@@ -12,6 +12,7 @@
 #include "core/detect/face_detector.hpp"
 #include "core/detect/start_search.hpp"
 #include "core/fit/fitter.hpp"
+#include "core/geometry/camera.hpp"
 #include "core/refine/descent_refinement.hpp"
 
 namespace clm3d {
@@ -19,6 +20,8 @@ namespace clm3d {
 struct FaceSearchSettings {
   // --- Read by both ---------------------------------------------------------------------------
   FitSettings fit;
+  // The camera of every image or frame (`--fov`): a pinhole with this vertical field of view.
+  double verticalFovDeg = kDefaultVerticalFovDeg;
   DetectorKind detector = DetectorKind::Cascade;
   // Where a detected face is searched from: the detector's start and a grid of moved copies, the
   // most confident fit kept (core/detect/start_search.hpp). One step of 0.10 eye distances (9

@@ -55,7 +55,7 @@ std::vector<Option<R>> makeOptions() {
 }
 
 ImageFitSettings settingsOf(const R& args) {
-  ImageFitSettings settings = imageFitSettings(args.tracker, args.fovDeg);
+  ImageFitSettings settings = imageFitSettings(args.tracker);
   settings.startOffset = args.startOffset;
   settings.startOffsetSeed = args.tracker.fit.optimiserSettings.seed;
   settings.keepRejected = args.keepRejected;

@@ -11,7 +11,6 @@
 #include "core/common/command_report.hpp"
 #include "core/common/option_table.hpp"
 #include "core/common/progress.hpp"
-#include "core/geometry/camera.hpp"
 #include "core/track/tracker_options.hpp"
 
 namespace clm3d {
@@ -21,9 +20,9 @@ struct FitRequest {
   bool quiet = false;
   bool keepRejected = false;
   double startOffset = 0.0;
-  // From the tracker table's Fit options and --fov, which the CLI adds beside these.
+  // From the tracker table's Fit options and --fov (verticalFovDeg), which the CLI adds beside
+  // these.
   TrackerSettings tracker;
-  double fovDeg = kDefaultVerticalFovDeg;
 };
 
 // The options of `clm3d fit` that are not the tracker table's, in its help's order.

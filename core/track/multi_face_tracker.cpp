@@ -188,10 +188,11 @@ std::vector<FaceStep> MultiFaceTracker::track(const cv::Mat& frame, int index, d
 TrackSummary trackVideoFaces(const std::filesystem::path& video, const ClmModel& model,
                              const TrackerSettings& settings, const MultiFaceSettings& faces,
                              const TrackRowSink& onRow, const FacePerFrame& perFrame,
-                             const ProgressCallback& progress, const CancelToken* cancel) {
+                             const ProgressCallback& progress, const CancelToken* cancel,
+                             int frameLimit) {
   VideoReader reader(video);
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), kDefaultVerticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
   MultiFaceTracker tracker(model, camera, settings, faces);
   const auto trackFrame = [&](const cv::Mat& image, int index, double timestamp,
                               TrackSummary& summary) {
@@ -204,7 +205,8 @@ TrackSummary trackVideoFaces(const std::filesystem::path& video, const ClmModel&
     }
   };
   return trackDecodedFrames(reader, model.shape.pointCount(), trackFrame, onRow,
-                            reader.frameCount(), "tracking", progress, cancel);
+                            framesCovered(reader, frameLimit), "tracking", progress, cancel,
+                            frameLimit);
 }
 
 }  // namespace clm3d

@@ -76,13 +76,13 @@ class MultiFaceTracker {
 // `onRow` with the id in the row's first extra cell (the tracks table's `face` column). perFrame
 // sees each frame once, with its faces' steps (none when no face is tracked) and the tracker, e.g.
 // to draw the overlay. Summary: frames decoded; succeeded, detections and fit times count
-// face-frames. Throws as trackVideo.
+// face-frames. With frameLimit >= 0 only the frames before it. Throws as trackVideo.
 using FacePerFrame =
     std::function<void(const cv::Mat&, const std::vector<FaceStep>&, MultiFaceTracker&)>;
 TrackSummary trackVideoFaces(const std::filesystem::path& video, const ClmModel& model,
                              const TrackerSettings& settings, const MultiFaceSettings& faces,
                              const TrackRowSink& onRow, const FacePerFrame& perFrame = {},
                              const ProgressCallback& progress = {},
-                             const CancelToken* cancel = nullptr);
+                             const CancelToken* cancel = nullptr, int frameLimit = -1);
 
 }  // namespace clm3d

@@ -37,6 +37,11 @@ std::vector<Option<R>> makeOptions() {
                                   "drawn (.mp4, .avi)"),
                     &R::overlay),
       textOption<R>(commandOption("init", "start the first frame from these points"), &R::init),
+      integerOption<R>(commandOption("last",
+                                     "last frame tracked, inclusive (-1 = the end): a segment from "
+                                     "the start, e.g. for a quick check of a long video",
+                                     -1, 100000000),
+                       &R::last),
       flagOption<R>(commandOption("quiet", "no progress on stderr"), &R::quiet),
   };
 }
@@ -72,6 +77,7 @@ std::string summaryText(const R& args, const ClmModel& model, const TrackSummary
 CommandReport run(const R& args, const ProgressCallback& progress,
                   const std::function<void(std::size_t)>& rowsWritten, const CancelToken* cancel) {
   const bool faceByFace = tracksFaceByFace(args.tracker);
+  const int frameLimit = args.last < 0 ? -1 : args.last + 1;
   if (faceByFace && !args.init.empty()) {
     throw InputError("--init starts one face's track: use it without --faces");
   }
@@ -94,7 +100,8 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   // frame, which opening decoded, rather than opened a second time.
   std::optional<VideoReader> video(std::in_place, args.video);
   {
-    const Camera camera = Camera::fromVerticalFov(video->width(), video->height(), args.fovDeg);
+    const Camera camera =
+        Camera::fromVerticalFov(video->width(), video->height(), args.tracker.verticalFovDeg);
     if (!args.init.empty()) initial = stateFromPointsFile(model, camera, args.init);
     if (!args.overlay.empty()) {
       overlay = std::make_unique<VideoWriter>(args.overlay, video->width(), video->height(),
@@ -137,10 +144,10 @@ CommandReport run(const R& args, const ProgressCallback& progress,
     try {
       if (faceByFace) {
         summary = trackVideoFaces(args.video, model, args.tracker, multiFaceSettings(args.tracker),
-                                  onRow, perFrameFaces, progress, cancel);
+                                  onRow, perFrameFaces, progress, cancel, frameLimit);
       } else {
         summary = trackVideo(*video, model, args.tracker, onRow, perFrame, progress, cancel,
-                             initial, detector.valid() ? detector.get() : nullptr);
+                             initial, detector.valid() ? detector.get() : nullptr, frameLimit);
       }
     } catch (const Cancelled&) {
       cancelled = true;

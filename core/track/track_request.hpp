@@ -14,17 +14,17 @@
 #include "core/common/command_report.hpp"
 #include "core/common/option_table.hpp"
 #include "core/common/progress.hpp"
-#include "core/geometry/camera.hpp"
 #include "core/track/tracker_options.hpp"
 
 namespace clm3d {
 
 struct TrackRequest {
   std::filesystem::path model, video, out, overlay, init;
+  int last = -1;  // the last frame tracked, inclusive (-1 = the end)
   bool quiet = false;
-  // From the tracker table's Track options and --fov, which the CLI adds beside these.
+  // From the tracker table's Track options and --fov (verticalFovDeg), which the CLI adds beside
+  // these.
   TrackerSettings tracker;
-  double fovDeg = kDefaultVerticalFovDeg;
 };
 
 // The options of `clm3d track` that are not the tracker table's, in its help's order.

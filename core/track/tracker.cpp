@@ -418,6 +418,11 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
   return summary;
 }
 
+int framesCovered(const VideoReader& reader, int frameLimit) {
+  const int declared = reader.frameCount();
+  return frameLimit >= 0 && (declared <= 0 || declared > frameLimit) ? frameLimit : declared;
+}
+
 void countStep(const TrackStep& step, TrackSummary& summary) {
   if (step.row.success) ++summary.succeeded;
   if (step.detected) ++summary.detections;
@@ -427,7 +432,7 @@ void countStep(const TrackStep& step, TrackSummary& summary) {
 TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
                                   int expectedFrames, std::string_view stage,
                                   const PerFrame& perFrame, const ProgressCallback& progress,
-                                  const CancelToken* cancel) {
+                                  const CancelToken* cancel, int frameLimit) {
   const auto trackFrame = [&](const cv::Mat& image, int index, double timestamp,
                               TrackSummary& summary) {
     TrackStep step = tracker.track(image, index, timestamp);
@@ -436,7 +441,7 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const T
     onRow(std::move(step.row));
   };
   return trackDecodedFrames(reader, tracker.fitter().model().shape.pointCount(), trackFrame, onRow,
-                            expectedFrames, stage, progress, cancel);
+                            expectedFrames, stage, progress, cancel, frameLimit);
 }
 
 TrackSummary trackVideo(
@@ -461,14 +466,15 @@ TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& mode
 TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const TrackerSettings& settings,
                         const TrackRowSink& onRow, const PerFrame& perFrame,
                         const ProgressCallback& progress, const CancelToken* cancel,
-                        std::optional<FitState> initial, std::unique_ptr<FaceDetector> detector) {
+                        std::optional<FitState> initial, std::unique_ptr<FaceDetector> detector,
+                        int frameLimit) {
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), kDefaultVerticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
   Tracker tracker(model, camera, settings);
   if (detector) tracker.setDetector(std::move(detector));
   if (initial) tracker.setState(*initial);
-  return trackRemainingFrames(reader, tracker, onRow, reader.frameCount(), "tracking", perFrame,
-                              progress, cancel);
+  return trackRemainingFrames(reader, tracker, onRow, framesCovered(reader, frameLimit), "tracking",
+                              perFrame, progress, cancel, frameLimit);
 }
 
 }  // namespace clm3d

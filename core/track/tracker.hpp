@@ -219,10 +219,11 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker,
                                   const ProgressCallback& progress, const CancelToken* cancel);
 // The same, handing each row to `onRow` as it is made instead of keeping it.
 using TrackRowSink = std::function<void(TrackRow&&)>;
+// With frameLimit >= 0 it stops before frame frameLimit (trackDecodedFrames).
 TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const TrackRowSink& onRow,
                                   int expectedFrames, std::string_view stage,
                                   const PerFrame& perFrame, const ProgressCallback& progress,
-                                  const CancelToken* cancel);
+                                  const CancelToken* cancel, int frameLimit = -1);
 
 // The loop under trackRemainingFrames and trackVideoFaces (core/track/multi_face_tracker.hpp):
 // decodes the reader's remaining frames on a thread of their own, hands each to `trackFrame` in
@@ -237,6 +238,9 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
                                 const TrackRowSink& onRow, int expectedFrames,
                                 std::string_view stage, const ProgressCallback& progress,
                                 const CancelToken* cancel, int frameLimit = -1);
+// The frames a run over `reader` with that frameLimit expects (progress): the declared count, at
+// most the limit.
+int framesCovered(const VideoReader& reader, int frameLimit);
 // Counts a tracked step in the summary: success, detection and fit time.
 void countStep(const TrackStep& step, TrackSummary& summary);
 
@@ -258,11 +262,12 @@ TrackSummary trackVideo(const std::filesystem::path& video, const ClmModel& mode
                         std::optional<FitState> initial = std::nullopt);
 // The same from a reader opened by the caller (the frames it has left: all of a fresh one), with
 // the tracker's detector when given (Tracker::setDetector), so that a caller that opened the video
-// to look at it first does not open it again.
+// to look at it first does not open it again; with frameLimit >= 0 only the frames before
+// frameLimit (`clm3d track --last`).
 TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const TrackerSettings& settings,
                         const TrackRowSink& onRow, const PerFrame& perFrame,
                         const ProgressCallback& progress, const CancelToken* cancel,
                         std::optional<FitState> initial,
-                        std::unique_ptr<FaceDetector> detector = nullptr);
+                        std::unique_ptr<FaceDetector> detector = nullptr, int frameLimit = -1);
 
 }  // namespace clm3d

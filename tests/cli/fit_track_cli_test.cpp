@@ -173,6 +173,36 @@ TEST(TrackCli, TracksAShortVideoWritesOverlayAndEvaluates) {
   EXPECT_EQ(rlms("--min-expert-confidence 0.99"), 0);
 }
 
+// --last tracks a segment from the start (the rows end at that frame, nothing marked missing after
+// it), and --fov reaches the tracker's camera: with a 25-degree camera the face, the same size in
+// the image, is fitted about 1.6 times as far away (tan 20 / tan 12.5) relative to its scale.
+TEST(TrackCli, LastTracksASegmentAndFovReachesTheTrackersCamera) {
+  const FitFiles& f = fitFiles();
+  const SequenceFiles files = turningHead(f.dir / "segment-sequence", 10.0, 2.0);
+  const std::string track =
+      "track --quiet --model " + f.model + " --video " + files.video.string() + " --out ";
+  const std::string wide = (f.dir / "segment.csv").string();
+  const std::string narrow = (f.dir / "segment-fov25.csv").string();
+  ASSERT_EQ(runClm3d(track + wide + " --last 2").exitCode, 0);
+  const auto run = runClm3d(track + narrow + " --last 2 --fov 25");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const TrackTable a = readTrackTable(wide);
+  const TrackTable b = readTrackTable(narrow);
+  ASSERT_EQ(a.rows.size(), 3u);
+  ASSERT_EQ(b.rows.size(), 3u);
+  EXPECT_EQ(a.rows.back().frame, 2);
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    ASSERT_TRUE(a.rows[i].pose && b.rows[i].pose) << i;
+    const double distanceA = -a.rows[i].pose->translation.z() / a.rows[i].pose->scale;
+    const double distanceB = -b.rows[i].pose->translation.z() / b.rows[i].pose->scale;
+    EXPECT_GT(distanceB / distanceA, 1.3) << "frame " << i;
+    EXPECT_LT(distanceB / distanceA, 2.0) << "frame " << i;
+  }
+  const auto usage = runClm3d(track + wide + " --last -2");
+  EXPECT_EQ(usage.exitCode, 2) << usage.output;
+  EXPECT_NE(usage.output.find("--last"), std::string::npos) << usage.output;
+}
+
 // --smooth and its parameters reach the tracker: the same frames succeed, later points move, the
 // eval prints the jitter; impossible parameters are usage errors naming the option.
 TEST(TrackCli, SmoothOptionsSmoothThePointsAndEvalReportsJitter) {

@@ -90,15 +90,13 @@ Outcome giveTo(OptionCommand which, const std::vector<std::string>& arguments) {
   const cli::FitOptions defaults;
   switch (which) {
     case OptionCommand::Fit:
-      outcome.changed = !(imageFitSettings(options.tracker, options.fovDeg) ==
-                          imageFitSettings(defaults.tracker, defaults.fovDeg));
+      outcome.changed = !(imageFitSettings(options.tracker) == imageFitSettings(defaults.tracker));
       break;
     case OptionCommand::Track:
       outcome.changed = !(options.tracker == defaults.tracker);
       break;
     default:
-      outcome.changed = !(batchSettings(options.tracker, options.fovDeg) ==
-                          batchSettings(defaults.tracker, defaults.fovDeg));
+      outcome.changed = !(batchSettings(options.tracker) == batchSettings(defaults.tracker));
       break;
   }
   return outcome;
@@ -161,7 +159,20 @@ TEST(OptionScope, TrackRefusesThePhotoFitsOptionsAndFitTakesTheChecksThreshold) 
   ASSERT_TRUE(
       parses(OptionCommand::Fit, {"--min-check-probability", "0.7"},
              [&](CLI::App& command) { cli::addFitOptions(command, options, OptionCommand::Fit); }));
-  EXPECT_DOUBLE_EQ(imageFitSettings(options.tracker, options.fovDeg).minCheckProbability, 0.7);
+  EXPECT_DOUBLE_EQ(imageFitSettings(options.tracker).minCheckProbability, 0.7);
+}
+
+// --fov, the one search option outside the table, is the camera of what each command runs: the
+// tracker's too (it built its camera with the default whatever was given, before issue 28's
+// review found it).
+TEST(OptionScope, FovChangesWhatFitTrackAndBatchReceive) {
+  for (const OptionCommand which :
+       {OptionCommand::Fit, OptionCommand::Track, OptionCommand::Batch}) {
+    SCOPED_TRACE(optionCommandName(which));
+    const Outcome outcome = giveTo(which, {"--fov", "25"});
+    EXPECT_TRUE(outcome.parsed);
+    EXPECT_TRUE(outcome.changed);
+  }
 }
 
 // Each command of the clm3d binary takes its scoped options and no other (so a command wired to
