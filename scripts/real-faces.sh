@@ -91,7 +91,7 @@ echo "== confidence ROC (right: start5, wrong: start offset by 0.5 eye distance)
 for optimiser in rlms fastncc; do
   echo "-- $optimiser"
   "$CLM3D" eval-points --truth-dir "$TEST" --pred-dir "$OUT/fits/$optimiser-start5" \
-    --pred-dir "$OUT/fits/$optimiser-offset" --points 1-18,22 --roc | grep -E "ROC|accepting"
+    --pred-dir "$OUT/fits/$optimiser-offset" --points 1-18,22 --roc | grep -E "ROC|accepting|at confidence"
 done
 
 # 5. Photo sequences: the first SEQUENCES test photos moving smoothly, and the last ROLLZOOM test

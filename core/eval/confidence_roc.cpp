@@ -49,6 +49,36 @@ ConfidenceRoc confidenceRoc(const std::vector<ScoredFit>& fits, double wrongAbov
   return roc;
 }
 
+ThresholdCounts countsAt(const std::vector<ScoredFit>& fits, double threshold, double wrongAbove,
+                         double farAbove) {
+  ThresholdCounts counts{threshold, wrongAbove, farAbove};
+  for (const ScoredFit& fit : fits) {
+    if (!std::isfinite(fit.confidence) || !std::isfinite(fit.error)) continue;
+    const bool accepted = fit.confidence >= threshold;
+    if (fit.error > wrongAbove) {
+      ++counts.wrong;
+      counts.wrongAccepted += accepted ? 1 : 0;
+    } else {
+      ++counts.right;
+      counts.rightKept += accepted ? 1 : 0;
+    }
+    if (fit.error > farAbove) {
+      ++counts.far;
+      counts.farAccepted += accepted ? 1 : 0;
+    }
+  }
+  return counts;
+}
+
+std::string formatThresholdCounts(const ThresholdCounts& counts) {
+  std::ostringstream out;
+  out << "  at confidence >= " << counts.threshold << ": keeps " << counts.rightKept << " of "
+      << counts.right << " right fits, accepts " << counts.wrongAccepted << " of " << counts.wrong
+      << " wrong ones and " << counts.farAccepted << " of " << counts.far << " more than "
+      << counts.farAbove << " off\n";
+  return out.str();
+}
+
 std::vector<ScoredFit> scoredFitsFromSummaries(const PointFolderReport& report) {
   std::vector<ScoredFit> fits;
   for (const PointFolderMethod& method : report.methods) {

@@ -37,6 +37,24 @@ struct ConfidenceRoc {
 
 ConfidenceRoc confidenceRoc(const std::vector<ScoredFit>& fits, double wrongAbove);
 
+// What one threshold does (a fit accepted when its confidence is at least `threshold`): right fits
+// kept, wrong ones (error above wrongAbove) accepted, and of the fits more than farAbove off (0.3:
+// a tracked frame that far off is `clm3d eval`'s wrong success) those accepted. Issue 27 asks the
+// tracker's default to keep at least 97% of the right fits and accept at most 1% of the wrong.
+struct ThresholdCounts {
+  double threshold = 0.5;
+  double wrongAbove = 0.15;
+  double farAbove = 0.3;
+  int right = 0, rightKept = 0;
+  int wrong = 0, wrongAccepted = 0;
+  int far = 0, farAccepted = 0;
+};
+ThresholdCounts countsAt(const std::vector<ScoredFit>& fits, double threshold, double wrongAbove,
+                         double farAbove);
+// "at confidence >= T: keeps K of R right fits, accepts A of W wrong ones and F of N more than
+// 0.3 off".
+std::string formatThresholdCounts(const ThresholdCounts& counts);
+
 // The fits of every method of a folder report that has a summary.csv (the batch fit's: columns
 // image and confidence) in its prediction folder, paired with their errors. InputError naming the
 // summary for a malformed one; methods without a summary are skipped.

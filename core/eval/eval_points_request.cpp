@@ -6,6 +6,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/eval/confidence_roc.hpp"
+#include "core/eval/landmark_error.hpp"
 #include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"
 #include "core/eval/yaw_bands.hpp"
@@ -66,6 +67,12 @@ std::vector<Option<R>> makeOptions() {
       realOption<R>(commandOption("wrong-above",
                                   "For --roc: a fit whose error exceeds this is wrong", 0.0, 10.0),
                     &R::wrongAbove),
+      realOption<R>(commandOption("accept-at",
+                                  "For --roc: also count the fits kept and accepted at this "
+                                  "confidence (default: the point check's default threshold, "
+                                  "--min-check-probability)",
+                                  0.0, 1.0),
+                    &R::acceptAt),
       path("poses",
            "With --truth-dir: CSV with columns image,yaw_deg (e.g. AFLW's index.csv); adds the "
            "per-|yaw|-band table",
@@ -161,7 +168,9 @@ CommandReport runFolders(const R& args, const Scheme& scheme, const std::vector<
           "--roc: no prediction folder has a summary.csv with confidences (write them with clm3d "
           "fit --images --out-dir)");
     }
-    notes << formatConfidenceRoc(confidenceRoc(fits, args.wrongAbove));
+    notes << formatConfidenceRoc(confidenceRoc(fits, args.wrongAbove))
+          << formatThresholdCounts(
+                 countsAt(fits, args.acceptAt, args.wrongAbove, EvalOptions{}.wrongAbove));
   }
   output.notes = notes.str();
   return output;

@@ -11,6 +11,7 @@
 
 #include "core/common/command_report.hpp"
 #include "core/common/option_table.hpp"
+#include "core/track/face_search_settings.hpp"
 
 namespace clm3d {
 
@@ -28,6 +29,9 @@ struct EvalPointsRequest {
   bool roc = false;
   bool sameFaces = false;
   double wrongAbove = 0.15;
+  // For --roc: the threshold whose counts are printed (the point check's default,
+  // --min-check-probability).
+  double acceptAt = FaceSearchSettings{}.minCheckProbability;
   double offFaceAbove = 0.08;
   std::filesystem::path poses, model;
   std::string yawBands = "0,30,60,90";

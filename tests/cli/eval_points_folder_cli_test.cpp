@@ -261,6 +261,33 @@ TEST(EvalPointsFolderCli, SameFacesScoresOnlyTheImagesEveryMethodFitted) {
   EXPECT_TRUE(test::contains(files.output, "--same-faces")) << files.output;
 }
 
+// --roc over the fits' summary.csv confidences, and the counts at --accept-at: right fits are
+// those within 0.15 (method A's img1 at 0.1, method B's three at 0.05), wrong A's img2 (0.2).
+TEST(EvalPointsFolderCli, RocCountsTheFitsKeptAndAcceptedAtAThreshold) {
+  const FolderFiles f;
+  test::writeFile(f.methodA / "summary.csv",
+                  "image,status,confidence\nimg1.jpg,ok,0.9\n"
+                  "img2.jpg,ok,0.6\nimg3.jpg,no-face,\n");
+  test::writeFile(f.methodB / "summary.csv",
+                  "image,status,confidence\nimg1.jpg,ok,0.8\nimg2.jpg,ok,0.4\nimg3.jpg,ok,0.55\n");
+  const std::string command = "eval-points --truth-dir " + f.truth.string() + " --pred-dir " +
+                              f.methodA.string() + " --pred-dir " + f.methodB.string() + " --roc";
+  const auto result = runClm3d(command);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_TRUE(test::contains(result.output, "(4 right, 1 wrong: error > 0.150): AUC 0.500"))
+      << result.output;
+  EXPECT_TRUE(test::contains(result.output,
+                             "at confidence >= 0.5: keeps 3 of 4 right fits, accepts 1 of 1 wrong "
+                             "ones and 0 of 0 more than 0.3 off"))
+      << result.output;
+  const auto stricter = runClm3d(command + " --accept-at 0.85");
+  ASSERT_EQ(stricter.exitCode, 0) << stricter.output;
+  EXPECT_TRUE(test::contains(stricter.output,
+                             "at confidence >= 0.85: keeps 1 of 4 right fits, accepts 0 of 1 "
+                             "wrong ones"))
+      << stricter.output;
+}
+
 TEST(EvalPointsFolderCli, BadInputNamesTheFileAndMixedModesAreUsageErrors) {
   const FolderFiles f;
   LandmarkSet ten(10, 2);

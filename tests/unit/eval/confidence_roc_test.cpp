@@ -50,5 +50,23 @@ TEST(ConfidenceRoc, OneClassOnlyHasNoCurve) {
   EXPECT_TRUE(roc.points.empty());
 }
 
+// The counts at one threshold, by hand: right fits (error up to 0.15) kept at confidence 0.5 or
+// more, wrong ones accepted, and of the wrong ones those more than 0.3 off; a NaN is left out.
+TEST(ConfidenceRoc, CountsAtOneThreshold) {
+  const std::vector<ScoredFit> fits{
+      {0.9, 0.02}, {0.5, 0.10}, {0.49, 0.05}, {0.95, 0.20},
+      {0.3, 0.25}, {0.7, 0.6},  {0.1, 0.9},   {std::numeric_limits<double>::quiet_NaN(), 0.5}};
+  const ThresholdCounts counts = countsAt(fits, 0.5, 0.15, 0.3);
+  EXPECT_EQ(counts.right, 3);
+  EXPECT_EQ(counts.rightKept, 2);  // 0.9 and 0.5; 0.49 is below
+  EXPECT_EQ(counts.wrong, 4);
+  EXPECT_EQ(counts.wrongAccepted, 2);  // 0.95 and 0.7
+  EXPECT_EQ(counts.far, 2);
+  EXPECT_EQ(counts.farAccepted, 1);  // 0.7 at 0.6
+  EXPECT_EQ(formatThresholdCounts(counts),
+            "  at confidence >= 0.5: keeps 2 of 3 right fits, accepts 2 of 4 wrong ones and 1 of 2 "
+            "more than 0.3 off\n");
+}
+
 }  // namespace
 }  // namespace clm3d
