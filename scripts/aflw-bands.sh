@@ -75,12 +75,16 @@ cat "$OUT/bands.md"
   --points 1-18,20-24 --band-table "$OUT/bands-same-no-ears.md" > /dev/null
 "$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d" --label clm3d \
   --poses "$AFLW/index.csv" --points 1-18,20-24 --band-table "$OUT/bands-no-ears.md" > /dev/null
+"$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d" --label clm3d \
+  --poses "$AFLW/index.csv" --points 19,25 --band-table "$OUT/bands-ears.md" > /dev/null
 echo "== the faces both fitted ($OUT/bands-same.md)"
 cat "$OUT/bands-same.md"
 echo "== the faces both fitted, without the ear lobes ($OUT/bands-same-no-ears.md)"
 cat "$OUT/bands-same-no-ears.md"
 echo "== clm3d on all its faces, without the ear lobes ($OUT/bands-no-ears.md)"
 cat "$OUT/bands-no-ears.md"
+echo "== clm3d on all its faces, the ear lobes alone ($OUT/bands-ears.md)"
+cat "$OUT/bands-ears.md"
 
 # 4. LFPW test (68-point truth): the box of the 68 points, yaw of the model fitted to the truth.
 if [[ ${LFPW:-0} == 1 && -d $LFPW_TEST ]]; then
