@@ -2,7 +2,10 @@
 # The real-faces comparison of docs/real-faces.md, in one run: clm3d (rlms and fastncc on the model
 # of resources/datasets/real.json) and dlib's 68-point predictor on the LFPW test photos, from each
 # one's own detector and from the truth; 20 photo sequences made from LFPW test photos; 5 videos of
-# two photos side by side, every face tracked; 5 photos turned -80..80 degrees; franck.mp4.
+# two photos side by side, every face tracked; 5 photos turned -80..80 degrees; franck.mp4; then,
+# with the same model, the AFLW bands (scripts/aflw-bands.sh, OUT/aflw), the photo timing
+# (scripts/photo-time.sh, OUT/photo-time: it trains real-705.json too) and the model's load time
+# (clm3d_bench): every table of that page. AFLW_BANDS=0 and PHOTO_TIME=0 leave those two out.
 #
 # Usage: scripts/real-faces.sh [OUT]   (default real-faces-out; reruns skip what exists)
 # Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
@@ -211,5 +214,22 @@ if [[ -f $FRANCK ]]; then
   printf '%-22s ' "agreement with dlib"
   python3 "$SCORE" --truth "$OUT"/franck/dlib/*.pts --pred "$OUT/franck/clm3d-pts" --pred-scheme 25 |
     grep -E "^all "
+fi
+
+# 9. The rest of docs/real-faces.md with the same model: the AFLW bands (and LFPW by band), the
+# photo timing (which trains real-705.json for its held-out photos) and the load time.
+if [[ ${AFLW_BANDS:-1} == 1 && -f $DATA/photos/aflw21/test.txt ]]; then
+  CLM3D=$CLM3D CLM3D_DATA=$DATA PEER_DLIB=$PEER_DLIB LFPW=1 \
+    bash scripts/aflw-bands.sh "$MODEL" "$OUT/aflw"
+fi
+if [[ ${PHOTO_TIME:-1} == 1 ]]; then
+  CLM3D=$CLM3D CLM3D_DATA=$DATA SCORE=$SCORE MODEL_ALL=$MODEL \
+    bash scripts/photo-time.sh "$OUT/photo-time"
+fi
+BENCH=$(dirname "$CLM3D")/clm3d_bench
+if [[ -x $BENCH ]]; then
+  echo "== model load, one core ($BENCH)"
+  CLM3D_BENCH_MODEL=$MODEL taskset -c 0 "$BENCH" --benchmark_filter=LoadModel \
+    --benchmark_repetitions=3 2>&1 | grep -E "LoadModel.*(median|mean)"
 fi
 echo "real-faces: results in $OUT"
