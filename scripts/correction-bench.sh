@@ -96,7 +96,7 @@ for name in $SEQUENCES; do
     video=$(find "$DATA/videos" -maxdepth 1 -name "${name}_*.mp4" | head -n 1)
     args+=(--video "$video" --truth "$OUT/$name/truth.csv" --label "$name")
   else
-    video=$(find "$OUT/$name" -maxdepth 1 -name 'sequence.*' ! -name '*.json' | head -n 1)
+    video=$(find "$OUT/$name/" -maxdepth 1 -name 'sequence.*' ! -name '*.json' | head -n 1)
     args+=(--video "$video" --truth "$OUT/$name/truth.csv" --label "$name")
   fi
 done

@@ -79,7 +79,8 @@ std::vector<Option<R>> makeOptions() {
   }
   // The adaptation's settings (`clm3d adapt`'s options, not its files; its --seed would clash
   // with the tracker's, so the adaptation keeps its default seed).
-  const std::set<std::string> adaptSettings{"jitter", "prior", "min-regions", "threads"};
+  const std::set<std::string> adaptSettings{"jitter", "prior", "refiner-prior", "min-regions",
+                                            "threads"};
   std::vector<Option<AdaptRequest>> adapt;
   for (const auto& option : adaptRequestOptions()) {
     if (adaptSettings.count(option.name) > 0) adapt.push_back(option);

@@ -75,6 +75,71 @@ Eigen::Matrix2Xd meanShapeOf(const std::vector<DescentPhoto>& photos, int leftEy
   return mean;
 }
 
+// The starts a cascade learns from: `perPhoto` per photo, each the truth (its shape taken up to
+// `otherShape` of the way towards another photo's) moved by `start`; drawn per photo from its own
+// seed, so they do not depend on the thread count.
+std::vector<Eigen::Matrix2Xd> drawStarts(const std::vector<DescentPhoto>& photos, int leftEye,
+                                         int rightEye, int perPhoto, double otherShape,
+                                         const StartPerturbation& start, std::uint64_t seed) {
+  std::vector<Eigen::Matrix2Xd> starts(photos.size() * static_cast<std::size_t>(perPhoto));
+  for (std::size_t p = 0; p < photos.size(); ++p) {
+    std::mt19937_64 random(seed * 1000003u + p);
+    const Eigen::Matrix2Xd& truth = photos[p].truth;
+    const double eyeDistance = (truth.col(leftEye) - truth.col(rightEye)).norm();
+    for (int k = 0; k < perPhoto; ++k) {
+      Eigen::Matrix2Xd shape = truth;
+      if (otherShape > 0.0 && photos.size() > 1) {
+        std::uniform_int_distribution<std::size_t> pick(0, photos.size() - 2);
+        std::size_t q = pick(random);
+        q += q >= p ? 1 : 0;
+        const Eigen::Matrix2Xd& other = photos[q].truth;
+        const double share = std::uniform_real_distribution<double>(0.0, otherShape)(random);
+        shape += share * (alignSimilarity2(other, truth).apply(other) - truth);
+      }
+      starts[p * static_cast<std::size_t>(perPhoto) + static_cast<std::size_t>(k)] =
+          perturbedPoints(shape, eyeDistance, start, random);
+    }
+  }
+  return starts;
+}
+
+// One stage's regression data over every start: the image features at `window` (and, with shape
+// terms, the scaled departures from the mean shape) and the steps to the truth, one column per
+// start, in the frame that maps the mean shape onto the start (into `frames`).
+struct StageSamples {
+  Eigen::MatrixXf features;
+  Eigen::MatrixXf targets;
+};
+StageSamples stageSamples(const std::vector<DescentPhoto>& photos, int perPhoto,
+                          const std::vector<Eigen::Matrix2Xd>& starts,
+                          const Eigen::Matrix2Xd& meanShape, double window, bool shapeTerms,
+                          std::vector<Similarity2>& frames, int threads,
+                          const CancelToken* cancel) {
+  const auto n = meanShape.cols();
+  const Eigen::Index d = n * kDescentFeaturesPerPoint;
+  const Eigen::Index shapeRows = shapeTerms ? 2 * n : 0;
+  const int m = static_cast<int>(starts.size());
+  StageSamples samples{Eigen::MatrixXf(d + shapeRows, m), Eigen::MatrixXf(2 * n, m)};
+  frames.resize(starts.size());
+  parallelFor(
+      m, threads,
+      [&](int s) {
+        const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
+        const Similarity2& frame = frames[s] = alignSimilarity2(meanShape, starts[s]);
+        const Eigen::Matrix2Xd start = frame.inverse(starts[s]);
+        samples.features.col(s).head(d) = descentFeatures(photo.region.grey, frame, start, window);
+        if (shapeRows > 0) {
+          samples.features.col(s).tail(shapeRows) =
+              static_cast<float>(kShapeFeatureScale) * departure(start, meanShape);
+        }
+        const Eigen::Matrix2Xd step = frame.inverse(photo.truth) - start;
+        samples.targets.col(s) =
+            Eigen::Map<const Eigen::VectorXd>(step.data(), 2 * n).cast<float>();
+      },
+      cancel);
+  return samples;
+}
+
 }  // namespace
 
 Eigen::Matrix2Xd DescentRegion::toRegion(const Eigen::Matrix2Xd& image) const {
@@ -205,45 +270,14 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
   const int perPhoto = settings.startsPerPhoto;
   const int m = static_cast<int>(photos.size()) * perPhoto;
 
-  // Starts drawn per photo from its own seed, so they do not depend on the thread count.
-  std::vector<Eigen::Matrix2Xd> starts(static_cast<std::size_t>(m));
-  for (std::size_t p = 0; p < photos.size(); ++p) {
-    std::mt19937_64 random(settings.seed * 1000003u + p);
-    const Eigen::Matrix2Xd& truth = photos[p].truth;
-    const double eyeDistance = (truth.col(leftEye) - truth.col(rightEye)).norm();
-    for (int k = 0; k < perPhoto; ++k) {
-      Eigen::Matrix2Xd shape = truth;
-      if (settings.otherShape > 0.0 && photos.size() > 1) {
-        std::uniform_int_distribution<std::size_t> pick(0, photos.size() - 2);
-        std::size_t q = pick(random);
-        q += q >= p ? 1 : 0;
-        const Eigen::Matrix2Xd& other = photos[q].truth;
-        const double share =
-            std::uniform_real_distribution<double>(0.0, settings.otherShape)(random);
-        shape += share * (alignSimilarity2(other, truth).apply(other) - truth);
-      }
-      starts[p * perPhoto + k] = perturbedPoints(shape, eyeDistance, settings.start, random);
-    }
-  }
-  std::vector<Similarity2> frames(static_cast<std::size_t>(m));
+  std::vector<Eigen::Matrix2Xd> starts = drawStarts(
+      photos, leftEye, rightEye, perPhoto, settings.otherShape, settings.start, settings.seed);
+  std::vector<Similarity2> frames;
   for (double window : settings.windows) {
-    Eigen::MatrixXf features(d + shapeRows, m);
-    Eigen::MatrixXf targets(2 * n, m);
-    parallelFor(
-        m, settings.threads,
-        [&](int s) {
-          const DescentPhoto& photo = photos[static_cast<std::size_t>(s / perPhoto)];
-          const Similarity2& frame = frames[s] = alignSimilarity2(refiner.meanShape, starts[s]);
-          const Eigen::Matrix2Xd start = frame.inverse(starts[s]);
-          features.col(s).head(d) = descentFeatures(photo.region.grey, frame, start, window);
-          if (shapeRows > 0) {
-            features.col(s).tail(shapeRows) =
-                static_cast<float>(kShapeFeatureScale) * departure(start, refiner.meanShape);
-          }
-          const Eigen::Matrix2Xd step = frame.inverse(photo.truth) - start;
-          targets.col(s) = Eigen::Map<const Eigen::VectorXd>(step.data(), 2 * n).cast<float>();
-        },
-        cancel);
+    StageSamples samples = stageSamples(photos, perPhoto, starts, refiner.meanShape, window,
+                                        settings.shapeTerms, frames, settings.threads, cancel);
+    Eigen::MatrixXf& features = samples.features;
+    Eigen::MatrixXf& targets = samples.targets;
     DescentStage stage;
     stage.window = window;
     const Eigen::VectorXf featureMean = features.rowwise().mean();
@@ -264,6 +298,90 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
     refiner.stages.push_back(std::move(stage));
   }
   return refiner;
+}
+
+DescentRefiner adaptDescentRefiner(const DescentRefiner& general,
+                                   const std::vector<DescentPhoto>& photos,
+                                   const DescentAdaptSettings& settings,
+                                   const CancelToken* cancel) {
+  if (general.empty()) return general;
+  if (photos.empty()) throw InputError("refiner: no photos to adapt to");
+  if (settings.startsPerPhoto < 1) throw InputError("refiner: need at least one start per photo");
+  if (!(settings.prior > 0.0)) throw InputError("refiner: the adaptation's prior must be positive");
+  DescentRefiner adapted = general;
+  const auto n = general.meanShape.cols();
+  const Eigen::Index d = n * kDescentFeaturesPerPoint;
+  const bool shapeTerms = general.hasShapeWeights();
+  const Eigen::Index shapeRows = shapeTerms ? 2 * n : 0;
+  const int perPhoto = settings.startsPerPhoto;
+  const auto copies = static_cast<double>(photos.size());
+  // The general stage weighs as `prior` photos: ridge prior / photos on the residual's regression
+  // (the ridge's unit is the samples' mean energy, and each photo gives perPhoto samples), and
+  // the residual's mean shrunk by photos / (photos + prior).
+  const double ridge = settings.prior / copies;
+  const float meanShare = static_cast<float>(copies / (copies + settings.prior));
+  std::vector<Eigen::Matrix2Xd> starts =
+      drawStarts(photos, general.leftEye, general.rightEye, perPhoto, settings.otherShape,
+                 settings.start, settings.seed);
+  std::vector<Similarity2> frames;
+  for (DescentStage& stage : adapted.stages) {
+    StageSamples samples = stageSamples(photos, perPhoto, starts, general.meanShape, stage.window,
+                                        shapeTerms, frames, settings.threads, cancel);
+    // What the general stage leaves of each step: the residual the video's own regression learns.
+    Eigen::MatrixXf predicted =
+        (stage.weights * (samples.features.topRows(d).colwise() - stage.featureMean)).colwise() +
+        stage.bias;
+    if (shapeRows > 0) {
+      predicted += stage.shapeWeights * (samples.features.bottomRows(shapeRows) /
+                                         static_cast<float>(kShapeFeatureScale));
+    }
+    Eigen::MatrixXf residual = samples.targets - predicted;
+    Eigen::MatrixXf& features = samples.features;
+    const Eigen::VectorXf featureMean = features.rowwise().mean();
+    features.colwise() -= featureMean;
+    const Eigen::VectorXf residualMean = meanShare * residual.rowwise().mean();
+    residual.colwise() -= residual.rowwise().mean();
+    const Eigen::MatrixXf change = ridgeRegression(features, residual, ridge);
+    // The next stage adapts from the starts this one moves.
+    const Eigen::MatrixXf steps = predicted + ((change * features).colwise() + residualMean);
+    for (std::size_t s = 0; s < starts.size(); ++s) {
+      starts[s] = stepped(frames[s], starts[s], steps.col(static_cast<Eigen::Index>(s)));
+    }
+    // The stage plus the change: change (x - mean) = change_image (image - general's mean)
+    //   - change_image (mean image - general's mean) + (scale change_shape) departure
+    //   - change_shape (mean of the scaled departures).
+    stage.weights += change.leftCols(d);
+    stage.bias += residualMean - change.leftCols(d) * (featureMean.head(d) - stage.featureMean);
+    if (shapeRows > 0) {
+      stage.shapeWeights += static_cast<float>(kShapeFeatureScale) * change.rightCols(shapeRows);
+      stage.bias -= change.rightCols(shapeRows) * featureMean.tail(shapeRows);
+    }
+  }
+  return adapted;
+}
+
+std::vector<DescentPhoto> descentPhotoAndMirror(const cv::Mat& image, const Eigen::Matrix2Xd& truth,
+                                                const std::vector<int>& mirror, int leftEye,
+                                                int rightEye) {
+  if (image.empty() || !truth.allFinite() ||
+      (truth.col(leftEye) - truth.col(rightEye)).norm() < 1.0)
+    return {};
+  cv::Mat flipped;
+  cv::flip(image, flipped, 1);
+  Eigen::Matrix2Xd mirrored(2, truth.cols());
+  for (Eigen::Index i = 0; i < truth.cols(); ++i) {
+    mirrored.col(mirror[static_cast<std::size_t>(i)]) =
+        Eigen::Vector2d(image.cols - 1 - truth(0, i), truth(1, i));
+  }
+  std::vector<DescentPhoto> faces(2);
+  for (int side = 0; side < 2; ++side) {
+    const Eigen::Matrix2Xd& points = side == 0 ? truth : mirrored;
+    faces[static_cast<std::size_t>(side)].region =
+        descentRegion(side == 0 ? image : flipped, points, leftEye, rightEye);
+    faces[static_cast<std::size_t>(side)].truth =
+        faces[static_cast<std::size_t>(side)].region.toRegion(points);
+  }
+  return faces;
 }
 
 }  // namespace clm3d

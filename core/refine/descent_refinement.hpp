@@ -126,4 +126,36 @@ DescentRefiner trainDescentRefiner(const std::vector<DescentPhoto>& photos,
                                    const DescentTrainSettings& settings,
                                    const CancelToken* cancel = nullptr);
 
+// Adapting a trained cascade to the faces of one video (`clm3d adapt`, issue 29): each stage, in
+// turn, keeps the general stage and adds what a regression of the general stage's residual on
+// these photos learns, from starts drawn as in training and moved by the stages adapted before it.
+// The general stage is the prior: it weighs as `prior` photos (the residual's regression has the
+// ridge prior / photos in the training ridge's unit, its mean is shrunk by photos / (photos +
+// prior)), so a few frames nudge the cascade, and a systematic offset of the video's mark-up from
+// the general one (another tool's chin or brow, say) is learnt. The mean shape, the windows and
+// the check stay the general refiner's.
+struct DescentAdaptSettings {
+  double prior = 30.0;  // photos (a frame and its mirror image are two)
+  int startsPerPhoto = 10;
+  StartPerturbation start;
+  double otherShape = 0.5;
+  std::uint64_t seed = 1;
+  int threads = 0;
+};
+// `general` adapted to `photos` (their regions and true points, as trainDescentRefiner takes
+// them); an empty refiner is returned as it is. Deterministic for a seed whatever the thread
+// count. InputError when there are no photos or the prior is not positive; Cancelled on `cancel`.
+DescentRefiner adaptDescentRefiner(const DescentRefiner& general,
+                                   const std::vector<DescentPhoto>& photos,
+                                   const DescentAdaptSettings& settings,
+                                   const CancelToken* cancel = nullptr);
+
+// A face to train or adapt a refiner from, and its left-right mirror image: `image` (as
+// descentRegion takes it) cut around `truth` (2 x N, the refiner's points in image pixels), and
+// flipped with the points swapped by `mirror` (position of each point's mirror image). Empty when
+// the image is empty, a point is not finite or the eyes (`leftEye`, `rightEye`) coincide.
+std::vector<DescentPhoto> descentPhotoAndMirror(const cv::Mat& image, const Eigen::Matrix2Xd& truth,
+                                                const std::vector<int>& mirror, int leftEye,
+                                                int rightEye);
+
 }  // namespace clm3d

@@ -33,6 +33,13 @@ std::vector<Option<R>> makeOptions() {
                                   "more keeps the adapted model nearer the general one",
                                   0, 1e6),
                     [](R& r) -> double& { return r.settings.priorRegions; }),
+      realOption<R>(commandOption("refiner-prior",
+                                  "weight of the general point refiner, in faces (a corrected "
+                                  "frame and its mirror image are two): each stage adds what a "
+                                  "ridge regression on the frames learns of its residual (0 = the "
+                                  "refiner is not adapted)",
+                                  0.0, 1e6),
+                    [](R& r) -> double& { return r.settings.refinerPrior; }),
       integerOption<R>(commandOption("min-regions",
                                      "a landmark with fewer regions in a view keeps its general "
                                      "expert there",
@@ -80,6 +87,10 @@ CommandReport runAdapt(const AdaptRequest& args, const ProgressCallback& progres
       << "experts: " << summary.expertsAdapted << " adapted, " << summary.expertsKept
       << " kept general (too few regions or a view no frame falls in); template means: "
       << summary.templatesAdapted << " adapted\n"
+      << "point refiner: "
+      << (summary.refinerFaces > 0 ? "adapted to " + std::to_string(summary.refinerFaces) + " faces"
+                                   : std::string("kept general"))
+      << '\n'
       << "model: " << args.out.string() << '\n';
   report.text = out.str();
   return report;

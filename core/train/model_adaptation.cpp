@@ -10,6 +10,7 @@
 #include "core/common/option_table.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
+#include "core/refine/descent_refinement.hpp"
 #include "core/train/expert_training.hpp"
 #include "core/train/photo_samples.hpp"
 #include "core/train/train_settings.hpp"
@@ -93,6 +94,9 @@ void AdaptSettings::validate() const {
     throw InputError("adapt: --prior must be in 0..1000000");
   }
   if (minRegions < 1 || minRegions > 10000) throw InputError("adapt: --min-regions must be >= 1");
+  if (!(refinerPrior >= 0.0 && refinerPrior <= 1e6)) {
+    throw InputError("adapt: --refiner-prior must be in 0..1000000");
+  }
   if (threads < 0 || threads > 64) throw InputError("adapt: --threads must be in 0..64");
 }
 
@@ -189,7 +193,10 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
   std::vector<char> expertAdapted(jobs.size(), 0), templateAdapted(jobs.size(), 0);
   const int regionSize = settings.patchSize + 2 * settings.expertRadius;
   const Eigen::Index regionPixels = Eigen::Index(regionSize) * regionSize;
-  JobProgress done(progress, static_cast<int>(jobs.size()), "experts", 0.5, 1.0);
+  // Progress: the photos to 0.5, the experts to 0.9 when the refiner follows, else to 1.
+  const bool adaptRefiner = adapt.refinerPrior > 0.0 && !general.refiner.empty();
+  const double expertsEnd = adaptRefiner ? 0.9 : 1.0;
+  JobProgress done(progress, static_cast<int>(jobs.size()), "experts", 0.5, expertsEnd);
   parallelFor(
       static_cast<int>(jobs.size()), settings.threads,
       [&](int j) {
@@ -260,6 +267,44 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
       if (patches.hasExperts()) result.expertsKept += static_cast<int>(patches.experts.size());
     }
   }
+  // The point refiner, from every frame that has all its points (and the frame's mirror image).
+  if (adaptRefiner) {
+    const DescentRefiner& refiner = general.refiner;
+    const auto positionOf = [&](int landmark) {
+      return static_cast<int>(
+          std::find(refiner.landmarks.begin(), refiner.landmarks.end(), landmark) -
+          refiner.landmarks.begin());
+    };
+    std::vector<int> mirror;
+    for (const int landmark : refiner.landmarks)
+      mirror.push_back(positionOf(scheme.mirrorOf(landmark)));
+    std::vector<std::vector<DescentPhoto>> slots(frames.size());
+    parallelFor(
+        static_cast<int>(frames.size()), settings.threads,
+        [&](int k) {
+          const AdaptationFrame& frame = frames[static_cast<std::size_t>(k)];
+          Eigen::Matrix2Xd truth(2, static_cast<Eigen::Index>(refiner.landmarks.size()));
+          for (std::size_t i = 0; i < refiner.landmarks.size(); ++i) {
+            truth.col(static_cast<Eigen::Index>(i)) = frame.points.col(refiner.landmarks[i]);
+          }
+          slots[static_cast<std::size_t>(k)] =
+              descentPhotoAndMirror(frame.image, truth, mirror, refiner.leftEye, refiner.rightEye);
+        },
+        cancel);
+    std::vector<DescentPhoto> faces;
+    for (std::vector<DescentPhoto>& both : slots) {
+      for (DescentPhoto& face : both) faces.push_back(std::move(face));
+    }
+    if (!faces.empty()) {
+      if (progress) progress(expertsEnd, "refiner");
+      DescentAdaptSettings refinerSettings;
+      refinerSettings.prior = adapt.refinerPrior;
+      refinerSettings.seed = adapt.seed;
+      refinerSettings.threads = settings.threads;
+      model.refiner = adaptDescentRefiner(refiner, faces, refinerSettings, cancel);
+      result.refinerFaces = static_cast<int>(faces.size());
+    }
+  }
   model.adaptation = ModelAdaptation{};
   model.adaptation.frames = result.framesUsed;
   model.provenance.created = utcNow();
@@ -269,9 +314,13 @@ ClmModel adaptModel(const ClmModel& general, const std::vector<AdaptationFrame>&
       ", prior " + optionRealText(adapt.priorRegions) + " regions, seed " +
       std::to_string(adapt.seed) + "): " + std::to_string(result.expertsAdapted) + " experts and " +
       std::to_string(result.templatesAdapted) + " template means moved" +
+      (result.refinerFaces > 0
+           ? "; point refiner adapted to " + std::to_string(result.refinerFaces) +
+                 " faces (prior " + optionRealText(adapt.refinerPrior) + " faces)"
+           : std::string()) +
       (general.provenance.notes.empty() ? "" : "; " + general.provenance.notes);
   model.validate();
-  if (progress) progress(1.0, "experts");
+  if (progress) progress(1.0, result.refinerFaces > 0 ? "refiner" : "experts");
   if (summary) *summary = std::move(result);
   return model;
 }

@@ -5,9 +5,11 @@
 // views they fall in moves towards them by maximum a posteriori adaptation: the general model's
 // expert is a prior worth `priorRegions` training regions (core/train/expert_training.hpp,
 // adaptPatchExpert) and its template mean a prior worth as many patches, so a handful of frames
-// nudges the model and the general training is not forgotten. Views and landmarks no frame shows,
-// the shape model, the PCA modes, the point refiner and the views' calibration stay the general
-// model's. Deterministic for a seed whatever the thread count; safe on a worker thread.
+// nudges the model and the general training is not forgotten. The point refiner is adapted the same
+// way (core/refine/descent_refinement.hpp, adaptDescentRefiner: the general cascade a prior worth
+// `refinerPrior` faces). Views and landmarks no frame shows, the shape model, the PCA modes, the
+// refiner's check and the views' calibration stay the general model's. Deterministic for a seed
+// whatever the thread count; safe on a worker thread.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +39,10 @@ struct AdaptSettings {
   // below the general model's against 23% (docs/adapt.md, "Chosen on real video").
   double priorRegions = 30.0;
   int minRegions = 8;  // a landmark with fewer regions in a view keeps its general expert there
+  // The general point refiner's weight, in faces (a corrected frame and its mirror image are two):
+  // each stage adds the regression of what it leaves on the frames, ridge-regularised towards no
+  // change by this weight. 0 = the refiner is not adapted.
+  double refinerPrior = 30.0;
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = one per core; the result does not depend on it
 
@@ -52,6 +58,8 @@ struct AdaptationSummary {
   int expertsAdapted = 0;            // per stored view, scale and landmark
   int expertsKept = 0;               // too few regions there: the general expert
   int templatesAdapted = 0;          // landmark template means moved
+  int refinerFaces = 0;  // faces (frames with every refined point, and their mirror images) the
+                         // point refiner was adapted to; 0: not adapted
 };
 
 // The general model adapted to `frames`. Progress stages "photos" (placing the frames) and

@@ -66,17 +66,10 @@ DescentRefiner trainPhotoRefiner(const std::vector<TrainingPhoto>& allPhotos, co
           truth.col(i) = photo.points.point(landmarks[i]).head<2>();
         }
         const cv::Mat image = cv::imread(photo.image.string(), cv::IMREAD_GRAYSCALE);
-        if (image.empty() || (truth.col(leftEye) - truth.col(rightEye)).norm() < 1.0) return;
-        cv::Mat flipped;
-        cv::flip(image, flipped, 1);
-        Eigen::Matrix2Xd mirrored(2, n);
-        for (int i = 0; i < n; ++i)
-          mirrored.col(mirror[i]) = Eigen::Vector2d(image.cols - 1 - truth(0, i), truth(1, i));
-        for (int side = 0; side < 2; ++side) {
-          const Eigen::Matrix2Xd& points = side == 0 ? truth : mirrored;
-          DescentPhoto& slot = slots[2 * static_cast<std::size_t>(index) + side];
-          slot.region = descentRegion(side == 0 ? image : flipped, points, leftEye, rightEye);
-          slot.truth = slot.region.toRegion(points);
+        std::vector<DescentPhoto> both =
+            descentPhotoAndMirror(image, truth, mirror, leftEye, rightEye);
+        for (std::size_t side = 0; side < both.size(); ++side) {
+          slots[2 * static_cast<std::size_t>(index) + side] = std::move(both[side]);
         }
       },
       cancel);

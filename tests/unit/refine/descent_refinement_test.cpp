@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
@@ -165,6 +166,75 @@ TEST(DescentRefinement, StartsTakenTowardsOtherFacesShapesTrainACascadeThatCorre
   }
   EXPECT_GT(before, 0.08);
   EXPECT_LT(after, 0.25 * before) << "before " << before << ", after " << after;
+}
+
+// Adapting to one video's mark-up (adaptDescentRefiner): a "video" whose annotator puts the chin
+// (point 5) 0.15 eye distances below the disc the general refiner learnt. Adapted on 12 of its
+// faces (and their mirror images), the cascade puts the chin of 20 other faces of the video near
+// the annotator's place, the other points as well as before; with an overwhelming prior it stays
+// the general one; the same photos and seed give the same cascade whatever the thread count.
+TEST(DescentRefinement, AdaptingToAVideosMarkupLearnsItsOffsetWithoutForgetting) {
+  const DescentRefiner& general = trainedRefiner();
+  constexpr double kChinOffset = 0.15;
+  const auto annotated = [&](const DrawnFace& face) {
+    Eigen::Matrix2Xd points = face.points;
+    points(1, 5) += kChinOffset * (points.col(0) - points.col(1)).norm();
+    return points;
+  };
+  const std::vector<int> mirror{1, 0, 2, 4, 3, 5};
+  std::mt19937_64 random(31);
+  std::vector<DescentPhoto> video;
+  for (int f = 0; f < 12; ++f) {
+    const DrawnFace face = drawFace(random);
+    for (DescentPhoto& photo : descentPhotoAndMirror(face.image, annotated(face), mirror, 0, 1)) {
+      video.push_back(std::move(photo));
+    }
+  }
+  ASSERT_EQ(video.size(), 24u);
+  DescentAdaptSettings settings;
+  settings.startsPerPhoto = 8;
+  settings.threads = 2;
+  const DescentRefiner adapted = adaptDescentRefiner(general, video, settings);
+  ASSERT_EQ(adapted.stages.size(), general.stages.size());
+  EXPECT_NO_THROW(adapted.validate(10));
+  EXPECT_EQ(adapted.meanShape, general.meanShape);
+
+  double chinGeneral = 0.0, chinAdapted = 0.0, restGeneral = 0.0, restAdapted = 0.0;
+  constexpr int kFaces = 20;
+  for (int f = 0; f < kFaces; ++f) {
+    const DrawnFace face = drawFace(random);
+    const Eigen::Matrix2Xd truth = annotated(face);
+    const Eigen::Matrix2Xd start = offStart(truth, random);
+    const double eyes = (truth.col(0) - truth.col(1)).norm();
+    const Eigen::Matrix2Xd byGeneral =
+        refinersPoints(refinePoints(general, face.image, schemePoints(start)));
+    const Eigen::Matrix2Xd byAdapted =
+        refinersPoints(refinePoints(adapted, face.image, schemePoints(start)));
+    chinGeneral += (byGeneral.col(5) - truth.col(5)).norm() / eyes / kFaces;
+    chinAdapted += (byAdapted.col(5) - truth.col(5)).norm() / eyes / kFaces;
+    restGeneral += meanError(byGeneral.leftCols(5), truth.leftCols(5)) / kFaces;
+    restAdapted += meanError(byAdapted.leftCols(5), truth.leftCols(5)) / kFaces;
+  }
+  std::cout << "[ chin " << chinGeneral << " -> " << chinAdapted << ", other points " << restGeneral
+            << " -> " << restAdapted << " ]\n";
+  EXPECT_GT(chinGeneral, 0.1);
+  EXPECT_LT(chinAdapted, 0.5 * chinGeneral);
+  EXPECT_LT(restAdapted, 1.2 * restGeneral + 0.005);
+
+  DescentAdaptSettings heavy = settings;
+  heavy.prior = 1e6;
+  const DescentRefiner kept = adaptDescentRefiner(general, video, heavy);
+  for (std::size_t k = 0; k < kept.stages.size(); ++k) {
+    EXPECT_LT((kept.stages[k].bias - general.stages[k].bias).cwiseAbs().maxCoeff(), 1e-3) << k;
+  }
+  DescentAdaptSettings oneThread = settings;
+  oneThread.threads = 1;
+  const DescentRefiner again = adaptDescentRefiner(general, video, oneThread);
+  for (std::size_t k = 0; k < again.stages.size(); ++k) {
+    EXPECT_EQ(again.stages[k].weights, adapted.stages[k].weights) << k;
+    EXPECT_EQ(again.stages[k].bias, adapted.stages[k].bias) << k;
+  }
+  EXPECT_THROW(adaptDescentRefiner(general, {}, settings), InputError);
 }
 
 TEST(DescentCheck, TellsRightRefinedPointsFromWrongOnes) {

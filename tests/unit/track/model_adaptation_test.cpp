@@ -18,6 +18,7 @@
 #include "core/track/tracker.hpp"
 #include "core/track/video_adaptation.hpp"
 #include "tests/support/fit_fixture.hpp"
+#include "tests/support/refiner_fixture.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -110,6 +111,33 @@ TEST(ModelAdaptation, CorrectedFramesLowerTheErrorOnTheOtherFrames) {
   std::cout << "error on the 30 frames not corrected: general " << before << ", adapted " << after
             << "\n";
   EXPECT_LT(after, before);
+}
+
+// A model with a point refiner (as one trained with photos has) gets its refiner adapted too, from
+// every corrected frame and its mirror image, and says so; --refiner-prior 0 leaves it as it was.
+TEST(ModelAdaptation, ThePointRefinerIsAdaptedFromTheFramesAndTheirMirrorImages) {
+  ClmModel general = test::fitTestModel();
+  general.refiner = test::photoRefiner();
+  std::vector<AdaptationFrame> frames = sequenceCorrections(renderedSequence());
+  frames.resize(4);
+  AdaptSettings settings;
+  settings.jitter = 1;
+  settings.threads = 2;
+  AdaptationSummary summary;
+  const ClmModel adapted = adaptModel(general, frames, settings, &summary);
+  EXPECT_EQ(summary.refinerFaces, 8);
+  ASSERT_EQ(adapted.refiner.stages.size(), general.refiner.stages.size());
+  EXPECT_FALSE(adapted.refiner.stages.back().bias.isApprox(general.refiner.stages.back().bias));
+  EXPECT_EQ(adapted.refiner.meanShape, general.refiner.meanShape);
+  EXPECT_NE(adapted.provenance.notes.find("point refiner adapted to 8 faces"), std::string::npos)
+      << adapted.provenance.notes;
+
+  settings.refinerPrior = 0.0;
+  const ClmModel kept = adaptModel(general, frames, settings, &summary);
+  EXPECT_EQ(summary.refinerFaces, 0);
+  EXPECT_EQ(kept.refiner.stages.back().bias, general.refiner.stages.back().bias);
+  settings.refinerPrior = -1.0;
+  EXPECT_THROW(adaptModel(general, frames, settings), InputError);
 }
 
 TEST(ModelAdaptation, SameSeedSameModelWhateverTheThreads) {
