@@ -363,6 +363,11 @@ DescentRefiner adaptDescentRefiner(const DescentRefiner& general,
 std::vector<DescentPhoto> descentPhotoAndMirror(const cv::Mat& image, const Eigen::Matrix2Xd& truth,
                                                 const std::vector<int>& mirror, int leftEye,
                                                 int rightEye) {
+  if (mirror.size() != static_cast<std::size_t>(truth.cols()) ||
+      std::any_of(mirror.begin(), mirror.end(),
+                  [&](int m) { return m < 0 || m >= truth.cols(); })) {
+    throw Error("refine: a point's mirror image is not among the refined points");
+  }
   if (image.empty() || !truth.allFinite() ||
       (truth.col(leftEye) - truth.col(rightEye)).norm() < 1.0)
     return {};

@@ -153,7 +153,8 @@ DescentRefiner adaptDescentRefiner(const DescentRefiner& general,
 // A face to train or adapt a refiner from, and its left-right mirror image: `image` (as
 // descentRegion takes it) cut around `truth` (2 x N, the refiner's points in image pixels), and
 // flipped with the points swapped by `mirror` (position of each point's mirror image). Empty when
-// the image is empty, a point is not finite or the eyes (`leftEye`, `rightEye`) coincide.
+// the image is empty, a point is not finite or the eyes (`leftEye`, `rightEye`) coincide; Error
+// when `mirror` does not give a position of the points for each point.
 std::vector<DescentPhoto> descentPhotoAndMirror(const cv::Mat& image, const Eigen::Matrix2Xd& truth,
                                                 const std::vector<int>& mirror, int leftEye,
                                                 int rightEye);

@@ -235,6 +235,9 @@ TEST(DescentRefinement, AdaptingToAVideosMarkupLearnsItsOffsetWithoutForgetting)
     EXPECT_EQ(again.stages[k].bias, adapted.stages[k].bias) << k;
   }
   EXPECT_THROW(adaptDescentRefiner(general, {}, settings), InputError);
+  const DrawnFace face = drawFace(random);
+  EXPECT_THROW(descentPhotoAndMirror(face.image, face.points, {1, 0, 2, 4, 3, 6}, 0, 1), Error);
+  EXPECT_THROW(descentPhotoAndMirror(face.image, face.points, {1, 0}, 0, 1), Error);
 }
 
 TEST(DescentCheck, TellsRightRefinedPointsFromWrongOnes) {
