@@ -339,8 +339,9 @@ DescentRefiner adaptDescentRefiner(const DescentRefiner& general,
     Eigen::MatrixXf& features = samples.features;
     const Eigen::VectorXf featureMean = features.rowwise().mean();
     features.colwise() -= featureMean;
-    const Eigen::VectorXf residualMean = meanShare * residual.rowwise().mean();
-    residual.colwise() -= residual.rowwise().mean();
+    const Eigen::VectorXf fullMean = residual.rowwise().mean();
+    residual.colwise() -= fullMean;
+    const Eigen::VectorXf residualMean = meanShare * fullMean;
     const Eigen::MatrixXf change = ridgeRegression(features, residual, ridge);
     // The next stage adapts from the starts this one moves.
     const Eigen::MatrixXf steps = predicted + ((change * features).colwise() + residualMean);

@@ -205,8 +205,7 @@ TrackSummary trackVideoFaces(const std::filesystem::path& video, const ClmModel&
     }
   };
   return trackDecodedFrames(reader, model.shape.pointCount(), trackFrame, onRow,
-                            framesCovered(reader, frameLimit), "tracking", progress, cancel,
-                            frameLimit);
+                            reader.frameCount(), "tracking", progress, cancel, frameLimit);
 }
 
 }  // namespace clm3d

@@ -382,6 +382,10 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
   summary.declaredFrames = reader.frameCount();
   // The frames this run covers: those declared, up to the limit.
   if (frameLimit >= 0 && summary.declaredFrames > frameLimit) summary.declaredFrames = frameLimit;
+  // Progress counts towards the limit too, also when the container does not say how many it holds.
+  if (frameLimit >= 0 && (expectedFrames <= 0 || expectedFrames > frameLimit)) {
+    expectedFrames = frameLimit;
+  }
   const double fps = reader.fps();  // read here: the decoder thread owns the reader below
   const auto skip = [&](int first, int count) {
     summary.unreadable.push_back({first, count});
@@ -416,11 +420,6 @@ TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep
   if (tail >= kUnreadableTailMinimum) skip(last + 1, tail);
   if (progress) progress(1.0, stage);
   return summary;
-}
-
-int framesCovered(const VideoReader& reader, int frameLimit) {
-  const int declared = reader.frameCount();
-  return frameLimit >= 0 && (declared <= 0 || declared > frameLimit) ? frameLimit : declared;
 }
 
 void countStep(const TrackStep& step, TrackSummary& summary) {
@@ -473,8 +472,8 @@ TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const Tracke
   Tracker tracker(model, camera, settings);
   if (detector) tracker.setDetector(std::move(detector));
   if (initial) tracker.setState(*initial);
-  return trackRemainingFrames(reader, tracker, onRow, framesCovered(reader, frameLimit), "tracking",
-                              perFrame, progress, cancel, frameLimit);
+  return trackRemainingFrames(reader, tracker, onRow, reader.frameCount(), "tracking", perFrame,
+                              progress, cancel, frameLimit);
 }
 
 }  // namespace clm3d

@@ -230,17 +230,15 @@ TrackSummary trackRemainingFrames(VideoReader& reader, Tracker& tracker, const T
 // frame order (it tracks the frame, gives its rows to `onRow` and counts them in the summary;
 // TrackSummary::frames is already counted), writes an unreadable row (`points` NaN columns) for
 // each frame the video declares but could not be decoded, reports progress and stops on `cancel`.
-// With frameLimit >= 0 it stops before frame frameLimit: the summary's declaredFrames is then at
-// most the limit, and frames beyond it are neither decoded nor missing.
+// With frameLimit >= 0 it stops before frame frameLimit: the summary's declaredFrames and the
+// frames progress expects are then at most the limit, and frames beyond it are neither decoded
+// nor missing.
 using FrameStep =
     std::function<void(const cv::Mat& image, int index, double timestamp, TrackSummary& summary)>;
 TrackSummary trackDecodedFrames(VideoReader& reader, int points, const FrameStep& trackFrame,
                                 const TrackRowSink& onRow, int expectedFrames,
                                 std::string_view stage, const ProgressCallback& progress,
                                 const CancelToken* cancel, int frameLimit = -1);
-// The frames a run over `reader` with that frameLimit expects (progress): the declared count, at
-// most the limit.
-int framesCovered(const VideoReader& reader, int frameLimit);
 // Counts a tracked step in the summary: success, detection and fit time.
 void countStep(const TrackStep& step, TrackSummary& summary);
 
