@@ -12,7 +12,7 @@
 # PEER_DLIB (the peer_dlib binary of ../shared/tools/peer-dlib; built into OUT when absent),
 # SCORE (../shared/tools/score_68.py), SEQUENCES (20), FRAMES (120), PAIRS (5),
 # TURNED (5), TRAIN_OPTIONS and TRACK_OPTIONS (extra options of clm3d train and of every
-# clm3d track, e.g. "--calibrate-views" and "--view-search-probability 0.9" for the A/B of
+# clm3d track, e.g. "--calibrate-views" and "--view-search 0" for the A/B of
 # docs/fitting.md#views-on-one-scale; use a fresh OUT for each).
 # The model trained here inherits LFPW's research-only terms: it is written to OUT, never committed.
 set -euo pipefail

@@ -32,7 +32,8 @@ CLI::Validator parsedBy(std::function<void(const std::string&)> parse) {
 CLI::Option* addSpecOption(CLI::App& command, const OptionSpec& option,
                            const std::string& defaultText,
                            std::function<void(const std::string&)> set) {
-  const std::string flag = "--" + option.name;
+  const std::string flag =
+      "--" + option.name + (option.formerName.empty() ? "" : ",--" + option.formerName);
   if (option.kind == OptionKind::Flag) {
     return command.add_flag_function(
         flag, [set](std::int64_t count) { set(count > 0 ? "true" : "false"); }, option.help);

@@ -75,6 +75,9 @@ struct OptionSpec {
   // Integer: a word standing for the value 0 below the range (e.g. "all" for `--faces all`): 0
   // is written as it and read from it, and the studio's spin box shows it below the minimum.
   std::string zeroWord{};
+  // The name the option had before it was renamed, still taken on the command line and in saved
+  // settings (the help and saved settings use `name`). Empty: none.
+  std::string formerName{};
 };
 
 // A command's own option (no studio label or group): name, help and, for numbers, the range.
@@ -283,7 +286,8 @@ std::vector<Option<Outer>> nestedOptions(const std::vector<Option<Inner>>& inner
 template <typename OptionT>
 const OptionT* findOption(const std::vector<OptionT>& table, std::string_view name) {
   for (const OptionT& option : table) {
-    if (option.name == name) return &option;
+    if (option.name == name || (!option.formerName.empty() && option.formerName == name))
+      return &option;
   }
   return nullptr;
 }

@@ -37,7 +37,7 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
   const int steps = std::max(0, settings.steps);
   FitResult best = search(start);
   int count = 1;
-  if (settings.onlyBelow > 0.0 && best.confidence >= settings.onlyBelow) {
+  if (settings.onlyBelow > 0.0 && best.probability >= settings.onlyBelow) {
     if (searches != nullptr) *searches = count;
     return best;
   }
@@ -50,7 +50,7 @@ FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat&
         moved.pose.scale *= size;
         FitResult fit = search(moved);
         ++count;
-        if (fit.confidence > best.confidence) best = std::move(fit);
+        if (fit.probability > best.probability) best = std::move(fit);
       }
     }
   }
@@ -81,18 +81,18 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
     if (searches != nullptr) *searches += made;
     if (!fit) continue;
     if (!search.accepted || search.accepted(*fit)) {
-      best = std::move(fit);  // the first accepted fit, whatever the confidence of those before
+      best = std::move(fit);  // the first accepted fit, whatever the probability of those before
       break;
     }
-    if (!best || fit->confidence > best->confidence) best = std::move(fit);
+    if (!best || fit->probability > best->probability) best = std::move(fit);
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
   if (!best) throw *firstError;  // no face could be searched
   return std::move(*best);
 }
 
-double viewComparableScore(const FitResult& fit) {
-  return std::isfinite(fit.viewProbability) ? fit.viewProbability : fit.searchScore();
+bool wantsViewSearch(const FitResult& fit, double below, bool all) {
+  return fit.probability < below && (all || comparesViews(fit.probabilitySource));
 }
 
 std::array<int, 2> neighbouringViews(const ClmModel& model, int view) {
@@ -134,7 +134,7 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
       // The turned start put the face outside the image: this neighbour is no candidate.
     }
     if (turned && (!accepted || accepted(*turned)) &&
-        viewComparableScore(*turned) > viewComparableScore(best) + margin) {
+        turned->probability > best.probability + margin) {
       best = std::move(*turned);
     }
   }
@@ -158,7 +158,7 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
   std::optional<FitResult> best;
   const auto consider = [&](const std::vector<FaceBox>& found) {
     FitResult fit = fitFromBestFace(fitter, model, image, found, search);
-    if (!best || fit.confidence > best->confidence) best = std::move(fit);
+    if (!best || fit.probability > best->probability) best = std::move(fit);
   };
   if (!faces.empty()) consider(faces);
   for (const double angle : tiltAngles(search.tiltSteps, search.tiltStepDeg)) {
@@ -172,13 +172,12 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
     }
     if (!turned.empty()) consider(turned);
   }
-  if (best && best->confidence < search.widerBelow) {
+  if (best && best->probability < search.widerBelow) {
     FitResult wider =
         fitFromBestStart(fitter, model, image, best->state, search.wider, nullptr, search.finish);
-    if (wider.confidence > best->confidence) best = std::move(wider);
+    if (wider.probability > best->probability) best = std::move(wider);
   }
-  if (best && search.viewsBelow > 0.0 && std::isfinite(best->viewProbability) &&
-      best->viewProbability < search.viewsBelow) {
+  if (best && wantsViewSearch(*best, search.viewsBelow, search.viewsOfAll)) {
     best = searchNeighbouringViews(fitter, model, image, *best, search.viewMargin, search.finish,
                                    search.accepted);
   }

@@ -26,9 +26,9 @@ struct StartSearchSettings {
   // Each shifted start is also searched at these relative sizes (1 = as placed), e.g. {0.9, 1.1}.
   // Empty: the placed size only.
   std::vector<double> sizes;
-  // The rest of the grid is searched only when the fit from the start itself has a confidence
-  // below this: a fit the point check already trusts is not searched eight more times. 0 = the
-  // whole grid always.
+  // The rest of the grid is searched only when the fit from the start itself has a probability
+  // (FitResult::probability) below this: a fit the point check already trusts is not searched
+  // eight more times. 0 = the whole grid always.
   double onlyBelow = 0.0;
 
   bool operator==(const StartSearchSettings&) const = default;
@@ -40,32 +40,31 @@ FitState shiftedStart(const ClmModel& model, const Fitter& fitter, FitState star
                       const Eigen::Vector2d& shareOfEyes);
 
 // What is done to each search's fit before fits are compared (the point refiner's refineFit: its
-// check's probability is then the confidence compared). Empty: nothing.
+// check's probability is then the probability compared). Empty: nothing.
 using FitFinisher = std::function<void(FitResult&)>;
 
-// Searches `image` from `start` and, unless that fit's confidence reaches settings.onlyBelow, from
+// Searches `image` from `start` and, unless that fit's probability reaches settings.onlyBelow, from
 // every start of the grid, finishes every fit with `finish`, and returns the one with the highest
-// confidence (the first on ties, so steps 0 with no sizes is fitter.fit(image, start) finished).
+// probability (the first on ties, so steps 0 with no sizes is fitter.fit(image, start) finished).
 // `searches`, when given, receives the number of searches made.
 FitResult fitFromBestStart(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                            const FitState& start, const StartSearchSettings& settings,
                            int* searches = nullptr, const FitFinisher& finish = {});
 
-// The score fits ending in different views are compared on: the view's calibrated probability
-// (FitResult::viewProbability) when the fit has one, else the search's own confidence.
-double viewComparableScore(const FitResult& fit);
-
 // The views next to `fit`'s in yaw, at its pitch (-1 where there is none): [lower yaw, higher].
 std::array<int, 2> neighbouringViews(const ClmModel& model, int view);
 
+// Whether `fit` is searched again from the neighbouring views: its probability is below `below`,
+// and, unless `all`, it is of a kind that compares views (comparesViews).
+bool wantsViewSearch(const FitResult& fit, double below, bool all);
+
 // A fit searched again from the views next to its own in yaw (neighbouringViews): from its state
 // turned half-way to each neighbour's centre, in that view, each finished with `finish`. Returns
-// the fit whose viewComparableScore is highest, `fit` itself unless another beats it by `margin`
-// and is `accepted` (when given; the tracker's judgement). A turned start that leaves the image
-// is no candidate.
-// A head turning past its view's range is caught by the next view (issue 26); the calibration is
-// what makes a side view's score comparable with a frontal one's. `searches`, when given, has the
-// searches made added.
+// the most probable fit (FitResult::probability), `fit` itself unless another beats it by
+// `margin` and is `accepted` (when given; the tracker's judgement). A turned start that leaves the
+// image is no candidate. A head turning past its view's range is caught by the next view (issue
+// 26); the one probability (core/fit/fit_probability.hpp) is what makes a side view's fit
+// comparable with a frontal one's. `searches`, when given, has the searches made added.
 FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                                   const FitResult& fit, double margin,
                                   const FitFinisher& finish = {},
@@ -75,7 +74,7 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
 // A detected image's search over its faces: fitFromBestStart from stateFromBox of each face in
 // `faces` order (best first), `placed` applied to each start when given, until `accepted` says
 // yes to a fit or maxFaces faces are searched; returns the accepted fit, or without one the most
-// confident (the first on ties); in `tried`, the number of faces searched, and `searches`, when
+// probable (the first on ties); in `tried`, the number of faces searched, and `searches`, when
 // given, has the searches made added. A false detection ranked first then costs one more search
 // instead of the face. `clm3d fit`, `clm3d batch` (through fitFromDetections) and the tracker's
 // detections all search their faces with it. A face whose start puts it outside the image is
@@ -91,16 +90,16 @@ struct FaceSearch {
   // tiltSteps and tiltStepDeg); 0 = upright only.
   int tiltSteps = 0;
   double tiltStepDeg = 15.0;
-  // fitFromDetections: a kept fit whose confidence is below widerBelow is searched again from the
+  // fitFromDetections: a kept fit whose probability is below widerBelow is searched again from the
   // starts of `wider` around its own state (moved and rescaled copies: a face the detector boxed
-  // too small or too large), and the more confident fit kept. 0 = never.
+  // too small or too large), and the more probable fit kept. 0 = never.
   double widerBelow = 0.0;
   StartSearchSettings wider{1, 0.15, {0.8, 1.25}};
-  // fitFromDetections: a kept fit whose calibrated probability (FitResult::viewProbability) is
-  // below viewsBelow is searched again from the neighbouring views (searchNeighbouringViews) and
-  // the one with the highest calibrated probability kept. 0 = never; no effect on a model whose
-  // views are not calibrated.
+  // fitFromDetections: a kept fit that wantsViewSearch(fit, viewsBelow, viewsOfAll) is
+  // searched again from the neighbouring views (searchNeighbouringViews) and the most probable
+  // kept. 0 = never.
   double viewsBelow = 0.0;
+  bool viewsOfAll = false;
   double viewMargin = 0.02;
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
@@ -113,10 +112,11 @@ std::vector<double> tiltAngles(int steps, double stepDeg);
 // A still image's whole face search: fitFromBestFace over `faces` (the detector's upright boxes,
 // possibly none); then, while no fit is accepted (search.accepted; without it, only when `faces`
 // is empty), over detector.detectTurned(image, angle) for each of tiltAngles(search.tiltSteps,
-// search.tiltStepDeg) that finds a face; then, when the most confident fit's confidence is below
-// search.widerBelow, fitFromBestStart from its state with search.wider. Returns the most confident
-// fit, nullopt when no face was found upright or turned. `detectMilliseconds`, when given, has the
-// turned detections' time added.
+// search.tiltStepDeg) that finds a face; then, when the most probable fit's probability is below
+// search.widerBelow, fitFromBestStart from its state with search.wider; then, below
+// search.viewsBelow, searchNeighbouringViews. Returns the most probable fit, nullopt when no face
+// was found upright or turned. `detectMilliseconds`, when given, has the turned detections' time
+// added.
 std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model,
                                            const cv::Mat& image, FaceDetector& detector,
                                            const std::vector<FaceBox>& faces,

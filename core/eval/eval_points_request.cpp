@@ -69,8 +69,7 @@ std::vector<Option<R>> makeOptions() {
                     &R::wrongAbove),
       realOption<R>(commandOption("accept-at",
                                   "For --roc: also count the fits kept and accepted at this "
-                                  "confidence (default: the point check's default threshold, "
-                                  "--min-check-probability)",
+                                  "confidence (default: the default of --min-probability)",
                                   0.0, 1.0),
                     &R::acceptAt),
       path("poses",

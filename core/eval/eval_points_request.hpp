@@ -31,7 +31,7 @@ struct EvalPointsRequest {
   double wrongAbove = 0.15;
   // For --roc: the threshold whose counts are printed (the point check's default,
   // --min-check-probability).
-  double acceptAt = FaceSearchSettings{}.minCheckProbability;
+  double acceptAt = FaceSearchSettings{}.minProbability;
   double offFaceAbove = 0.08;
   std::filesystem::path poses, model;
   std::string yawBands = "0,30,60,90";

@@ -174,28 +174,28 @@ FitResult Fitter::fit(const cv::Mat& image, const FitState& start, int currentVi
     }
   }
 
-  // Confidence: the match of templates synthesised at the final estimate, at the finest scale.
+  // The score: the match of templates synthesised at the final estimate, at the finest scale.
   view = selector_.select(degrees(p[kParamPitch]), degrees(p[kParamYaw]), view);
   const PatchModel& finest = model_->views[static_cast<std::size_t>(view)].scales[0];
   problem_.configure(finest, working_, 0, settings_.alphaMask, depth);
-  // The templates at the final estimate: the template optimisers' confidence matches them; with
+  // The templates at the final estimate: the template optimisers' score matches them; with
   // experts they are only drawn, and templates() makes them if asked.
   if (!optimiser_->usesExperts()) problem_.synthesiseTemplates(p);
   Eigen::VectorXd perLandmark(problem_.landmarkCount());
-  result.confidence = optimiser_->usesExperts()
-                          ? expertResponses(problem_.image(), problem_.projector(), finest.experts,
-                                            finest.patchSize, p, perLandmark)
-                          : problem_.landmarkNcc(p, perLandmark);
+  result.searchScore = optimiser_->usesExperts()
+                           ? expertResponses(problem_.image(), problem_.projector(), finest.experts,
+                                             finest.patchSize, p, perLandmark)
+                           : problem_.landmarkNcc(p, perLandmark);
   result.region = SearchRegion{low - margin, high + margin, scale, depth};
 
   fromParams(p, state);
   result.state = state;
   result.points = project(state);
   result.view = view;
-  const auto& calibration = model_->views[static_cast<std::size_t>(view)].calibration;
-  if (calibration && optimiser_->usesExperts()) {
-    result.viewProbability = (*calibration)(result.confidence);
-  }
+  const FitProbability probability =
+      searchProbability(*model_, view, optimiser_->usesExperts(), result.searchScore);
+  result.probability = probability.probability;
+  result.probabilitySource = probability.source;
   result.modelled.assign(static_cast<std::size_t>(model_->shape.pointCount()), false);
   result.landmarkConfidence.assign(static_cast<std::size_t>(model_->shape.pointCount()),
                                    std::numeric_limits<double>::quiet_NaN());

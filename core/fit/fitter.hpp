@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/fit/fit_probability.hpp"
 #include "core/fit/fit_state.hpp"
 #include "core/fit/optimiser.hpp"
 #include "core/fit/search_problem.hpp"
@@ -61,30 +62,26 @@ struct FitResult {
   Eigen::Matrix2Xd points;     // every scheme landmark, input pixels
   std::vector<bool> modelled;  // landmarks the final view's model holds (the others are hidden)
   int view = -1;
-  // Template optimisers: mean NCC at the finest scale searched, in [-1, 1]. rlms: the experts'
-  // mean response at the final points (finest scale), in (0, 1).
-  double confidence = 0.0;
-  // When the model's point refiner has refined and checked the points
-  // (core/refine/refined_fit.hpp), `confidence` is the check's probability that they are right and
-  // this is the search's own confidence above; NaN otherwise.
-  double searchConfidence = std::numeric_limits<double>::quiet_NaN();
-  // The same measure per scheme landmark (the NCC of its patch, or its expert's response); NaN
+  // The search's own score at its final points, finest scale: for the template optimisers the
+  // mean NCC, in [-1, 1]; for rlms the experts' mean response, in (0, 1). On its optimiser's scale
+  // (and for rlms its view's): fits are judged and compared by `probability`.
+  double searchScore = 0.0;
+  // The probability that the fit's points are right, in [0, 1], on one scale for every optimiser
+  // and view (core/fit/fit_probability.hpp): the Fitter sets it from searchScore, refineFit
+  // (core/refine/refined_fit.hpp) replaces it by the point refiner's check of the refined points.
+  double probability = 0.0;
+  ProbabilitySource probabilitySource = ProbabilitySource::BuiltInNccCurve;
+  // The search's score per scheme landmark (the NCC of its patch, or its expert's response); NaN
   // for the landmarks the final view does not model. Their mean over the modelled ones is
-  // `confidence`.
+  // `searchScore`.
   std::vector<double> landmarkConfidence;
-  // The final view's calibration (ViewModel::calibration) of the search's confidence: the
-  // probability that the search is right, on one scale for every view, so that fits ending in
-  // different views can be compared. NaN when the view has none or the optimiser is not the one it
-  // was calibrated for (the experts', rlms).
+  // The final view's own check (ViewModel::check) of the search's points, set by refineFit; NaN
+  // when the view has none.
   double viewProbability = std::numeric_limits<double>::quiet_NaN();
+  bool refined = false;    // the model's point refiner moved the points (refineFit)
   bool converged = false;  // the finest scale met the tolerance within maxIterations
   int iterations = 0;      // over all scales
   SearchRegion region;     // where the search read the image (Fitter::templates)
-
-  // The search's own confidence, checked or not.
-  double searchScore() const {
-    return std::isnan(searchConfidence) ? confidence : searchConfidence;
-  }
 };
 
 class Fitter {

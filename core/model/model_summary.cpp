@@ -1,5 +1,6 @@
 #include "core/model/model_summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -73,10 +74,20 @@ std::string describeModelFile(const std::filesystem::path& path) {
   } else {
     out << "point refiner: " << model.refiner.stages.size() << " stages over "
         << model.refiner.landmarks.size() << " landmarks, "
-        << (model.refiner.check.empty() ? "no check (fits keep the search's confidence)"
-                                        : "checked (a fit's confidence is the check's)")
-        << "\n";
+        << (model.refiner.check.empty() ? "no check" : "checked") << "\n";
   }
+  // Where a fit's probability of being right comes from (core/fit/fit_probability.hpp).
+  const bool calibrated = std::any_of(model.views.begin(), model.views.end(),
+                                      [](const ViewModel& view) { return view.calibration; });
+  out << "fit probability: "
+      << (!model.refiner.check.empty()
+              ? "the point refiner's check of the refined points, whatever the optimiser"
+          : calibrated
+              ? "rlms: the views' calibration of the experts' response; template optimisers: "
+                "the built-in curve of the mean NCC"
+              : "the built-in curves of the search's score (the model carries no calibration: "
+                "a mean NCC of 0.35 or an expert response of 0.45 is 0.5)")
+      << "\n";
   const ModelProvenance& p = model.provenance;
   out << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"
       << "created: " << p.created << " by clm3d " << p.toolVersion << ", seed " << p.seed << "\n";

@@ -15,16 +15,17 @@ void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
   if (refiner.empty()) return;
   if (fit.view >= 0 && !model.views[static_cast<std::size_t>(fit.view)].refined) {
     if (std::isfinite(fit.viewProbability)) {
-      fit.searchConfidence = fit.searchScore();
-      fit.confidence = fit.viewProbability;
+      fit.probability = fit.viewProbability;
+      fit.probabilitySource = ProbabilitySource::ViewCheck;
     }
     return;
   }
   RefinedPoints refined = refineAndCheck(refiner, image, fit.points, true, starts);
   fit.points = std::move(refined.points);
+  fit.refined = true;
   if (std::isfinite(refined.rightProbability)) {
-    fit.searchConfidence = fit.searchScore();
-    fit.confidence = refined.rightProbability;
+    fit.probability = refined.rightProbability;
+    fit.probabilitySource = ProbabilitySource::Check;
   }
 }
 

@@ -1,8 +1,8 @@
 // A search's fit finished by the model's point refiner: the points refined and, where the refiner
-// has a check, the fit's confidence replaced by the check's probability that the refined points
-// are right (the search's own kept as FitResult::searchConfidence). Still images, batches and the
-// tracker finish every fit this way, so that the confidence they compare starts by, report and
-// judge failures on is that of the points they output.
+// has a check, the fit's probability (FitResult::probability) replaced by the check's probability
+// that the refined points are right (the search's own score stays in FitResult::searchScore).
+// Still images, batches and the tracker finish every fit this way, so that the probability they
+// compare starts by, report and judge failures on is that of the points they output.
 #pragma once
 
 #include <opencv2/core/mat.hpp>
@@ -16,9 +16,8 @@ namespace clm3d {
 // Finishes `fit` in place with `model`'s refiner (nothing changes when it has none); `image` is
 // the searched one, `starts` as refineAndCheck takes them. In a view the refiner did not learn
 // (ViewModel::refined false: a profile, for a refiner learnt from near-frontal photos) the points
-// stay the search's, and the confidence becomes the view's calibrated probability
-// (FitResult::viewProbability) when it has one, so that such a fit is judged on the same
-// probability scale as a checked one.
+// stay the search's, and the fit's probability becomes the view's own check's
+// (FitResult::viewProbability) when it has one.
 void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
                const RefinerStarts& starts = {});
 

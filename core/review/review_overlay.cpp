@@ -41,7 +41,7 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
     result.points = shown.points;
     result.modelled = present;
     result.view = 0;
-    result.confidence = shown.confidence;
+    result.probability = shown.confidence;
     step.fit = std::move(result);
     FitOverlayOptions withoutPatches = options;
     withoutPatches.patches = false;
@@ -49,7 +49,7 @@ void drawReviewOverlay(cv::Mat& bgr, const TrackRow& shown, const std::optional<
     drawFitOverlay(bgr, bgr, step, fitter, scheme, withoutPatches);
     return;
   }
-  step.fit->confidence = shown.confidence;
+  step.fit->probability = shown.confidence;
   drawFitOverlay(bgr, bgr, step, fitter, scheme, options);
 }
 

@@ -146,11 +146,9 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     if (settings_.refine) {
       finish = [this](FitResult& fit) { refineFit(*model_, lastImage_, fit); };
     }
-    // Only the check's probability tells a wrong fit on real faces (docs/real-faces.md); a fit it
-    // did not check passes.
+    // The one probability judges a photo's fit as it judges a tracked frame.
     const auto passes = [this](const FitResult& result) {
-      return std::isnan(result.searchConfidence) ||
-             result.confidence >= settings_.minCheckProbability;
+      return result.probability >= settings_.minProbability;
     };
     FitResult fit;
     double turnedMilliseconds = 0.0;  // detection in turned copies, inside the search
@@ -165,7 +163,8 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       search.tiltStepDeg = settings_.tiltStepDeg;
       search.widerBelow = checked ? settings_.widerSearchBelow : 0.0;
       search.wider = settings_.widerSearch;
-      search.viewsBelow = settings_.viewSearchProbability;
+      search.viewsBelow = settings_.viewSearchBelow;
+      search.viewsOfAll = settings_.viewSearchAll;
       search.viewMargin = settings_.viewSearchMargin;
       std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
                                                          faces, search, &turnedMilliseconds);
@@ -182,7 +181,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       if (finish) finish(fit);
     }
     const bool doubted =
-        settings_.refineRunsBelow <= 0.0 || fit.confidence < settings_.refineRunsBelow;
+        settings_.refineRunsBelow <= 0.0 || fit.probability < settings_.refineRunsBelow;
     if (settings_.refine && settings_.refineRuns > 1 && !model_->refiner.empty() && doubted) {
       // The starts were compared by a refinement from one start each; the kept fit's points are
       // refined again from the search's own, now from several starts.
@@ -200,9 +199,9 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     if (rejected) {
       std::ostringstream reason;
       reason << std::fixed << std::setprecision(2)
-             << "the model's point check rejects the fit (probability " << fit.confidence
-             << ", below " << settings_.minCheckProbability
-             << "): the points are probably not on a face";
+             << "the model rejects the fit: its probability of being right (" << fit.probability
+             << ", by the " << toString(fit.probabilitySource) << ") is below "
+             << settings_.minProbability << "): the points are probably not on a face";
       outcome.message = fileMessage(image, reason.str());
     }
     if (!output.empty() && (!rejected || settings_.keepRejected)) {
@@ -237,7 +236,7 @@ std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes) 
     out << csvCell(o.image.string()) << ',' << toString(o.status) << ','
         << fixedCell(o.fitMilliseconds, 3) << ',' << fixedCell(o.detectMilliseconds, 3) << ',';
     if (o.fit) {
-      out << fixedCell(o.fit->confidence, 6) << ',' << fixedCell(o.fit->searchConfidence, 6) << ','
+      out << fixedCell(o.fit->probability, 6) << ',' << fixedCell(o.fit->searchScore, 6) << ','
           << fixedCell(o.viewPitchDeg, 1) << ',' << fixedCell(o.viewYawDeg, 1) << ','
           << o.fit->iterations << ',' << (o.fit->converged ? 1 : 0) << ',';
     } else {

@@ -40,7 +40,7 @@ struct ImageFitSettings : FaceSearchSettings {
   // batch yields wrong fits whose confidence can be compared with right ones. 0 = off.
   double startOffset = 0.0;
   std::uint64_t startOffsetSeed = 1;
-  // A fit whose check probability stays below minCheckProbability is Rejected and its points are
+  // A fit whose probability stays below minProbability is Rejected and its points are
   // not written, as a tracker does not report such a frame as tracked; true writes them all the
   // same (the status stays Rejected).
   bool keepRejected = false;
@@ -53,9 +53,8 @@ struct ImageFitSettings : FaceSearchSettings {
 // and --fov).
 ImageFitSettings imageFitSettings(const FaceSearchSettings& search);
 
-// Rejected: the search ran, but the model's point check (a model trained with photos) gives its
-// points a probability below ImageFitSettings::minCheckProbability: they are probably not on the
-// face.
+// Rejected: the search ran, but its fit's probability of being right (FitResult::probability) is
+// below ImageFitSettings::minProbability: the points are probably not on the face.
 enum class ImageFitStatus { Ok, Rejected, NoFace, Error };
 // "ok", "rejected", "no-face", "error" (the summary's status column).
 const char* toString(ImageFitStatus status);
@@ -141,8 +140,8 @@ ImageFitOutcome fitBatchImage(ImageFitter& fitter, const std::filesystem::path& 
                               const std::filesystem::path& output);
 
 // The summary table: a header "image,status,fit_ms,detect_ms,confidence,search_confidence,
-// view_pitch,view_yaw,iterations,converged,error" and one row per outcome (search_confidence is
-// FitResult::searchConfidence: set when the point refiner's check gave the confidence).
+// view_pitch,view_yaw,iterations,converged,error" and one row per outcome (confidence is the fit's
+// probability, FitResult::probability; search_confidence the search's raw score, searchScore).
 // Milliseconds with 3 decimals, the confidences with 6, view angles in degrees; empty cells where
 // there is no value. A cell holding a comma, quote or line break is quoted as RFC 4180 says.
 std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes);

@@ -45,22 +45,30 @@ struct FaceSearchSettings {
   // without photos have none) to every search's points (core/refine/refined_fit.hpp). A tracked
   // frame still starts the next from the fitted 3D state.
   bool refine = true;
-  // With a refiner that has a check (models trained with photos since format 5), a fit whose
-  // check probability that its refined points are right is below this fails: a tracked frame is
-  // lost (the tracker's confidence thresholds are then not applied), a photo's fit is rejected and
-  // the next face searched.
-  double minCheckProbability = 0.5;
-  // With a model whose views are calibrated (ViewModel::calibration, models trained with photos
-  // since format 7): a fit whose calibrated probability (FitResult::viewProbability) is below this
-  // is also searched from the neighbouring views, and the most probable kept, in `clm3d track` and
-  // `clm3d fit` alike (searchNeighbouringViews). The calibration puts a side view's score and a
-  // frontal one's on one scale, which the raw responses are not. 0, the default, switches it off:
-  // with the real-faces model trained with --calibrate-views (side views' ROC areas 0.64-0.78), the
-  // search at 0.9 took the error over the face box on 5 LFPW photos turned -80..80 degrees from
-  // 0.035 to 0.045 at |yaw| 0-30 and from 0.058 to 0.068 at 30-60
-  // (docs/fitting.md#views-on-one-scale).
-  double viewSearchProbability = 0.0;
-  double viewSearchMargin = 0.02;  // on any of the scales (the tracker's too)
+  // A fit whose probability of being right (FitResult::probability, core/fit/fit_probability.hpp:
+  // the point refiner's check for models trained with photos, else the search's score on its
+  // calibration or built-in curve) is below this fails: a tracked frame is lost and the face
+  // detected again, a photo's fit is rejected and the next face searched. One threshold for every
+  // optimiser and view; with the built-in curves it fails what the NCC threshold of 0.35 and the
+  // experts' of 0.45 failed before.
+  double minProbability = 0.5;
+  // A fit whose probability is below this is also searched from the neighbouring views in yaw
+  // (half-way to their centres), and the most probable kept if it is more probable by
+  // viewSearchMargin, in `clm3d track` and `clm3d fit` alike (searchNeighbouringViews): a head
+  // turning past a view's range is caught by the next view before it is lost. With the built-in
+  // curve it searches below the mean NCC of 0.7 the template optimisers searched below before.
+  // 0 switches it off.
+  double viewSearchBelow = 0.9;
+  // Whether a fit whose probability does not compare views (comparesViews: the point refiner's
+  // check's, models trained with photos; the experts' response on the built-in curve, rlms on
+  // models without calibrations) is searched from the neighbouring views too. Off, so that
+  // neither searches, as rlms did not before there was one probability: on the 5 LFPW photos
+  // turned -80..80 degrees of docs/real-faces.md the search on checked fits took the frames
+  // reported as tracked with an error above 0.3 eye distances from 59 to 73 (of 352 and 358
+  // tracked); franck.mp4, the 25 photo sequences and the LFPW photos were unchanged. On franck.mp4
+  // a search comparing the experts' raw responses walked the fit into +-60 degree views.
+  bool viewSearchAll = false;
+  double viewSearchMargin = 0.02;
 
   // --- Read by a still image's fit only ---------------------------------------------------------
   // Tilted faces: when no upright face's fit passes the point refiner's check (or no face is

@@ -70,8 +70,8 @@ void drawLabel(cv::Mat& bgr, const std::string& what, const FitResult* fit, cons
   if (fit != nullptr && fit->view >= 0 &&
       fit->view < static_cast<int>(fitter.model().views.size())) {
     const ViewModel& view = fitter.model().views[static_cast<std::size_t>(fit->view)];
-    std::snprintf(text, sizeof text, "%s  view %+.0f/%+.0f  conf %.2f%s", what.c_str(),
-                  view.pitchDeg, view.yawDeg, fit->confidence, passed ? "" : failedMark);
+    std::snprintf(text, sizeof text, "%s  view %+.0f/%+.0f  p %.2f%s", what.c_str(), view.pitchDeg,
+                  view.yawDeg, fit->probability, passed ? "" : failedMark);
   } else {
     std::snprintf(text, sizeof text, "%s", what.c_str());
   }

@@ -92,8 +92,9 @@ CommandReport fitOne(const R& args) {
   }
   if (rejected) output.warnings = "warning: " + outcome.message + '\n';
   text << std::fixed << std::setprecision(3) << (rejected ? "rejected " : "fitted ")
-       << args.image.string() << " -> " << args.out.string() << ": confidence " << fit.confidence
-       << ", view (pitch " << outcome.viewPitchDeg << ", yaw " << outcome.viewYawDeg << "), "
+       << args.image.string() << " -> " << args.out.string() << ": probability " << fit.probability
+       << " (" << toString(fit.probabilitySource) << "; search score " << fit.searchScore
+       << "), view (pitch " << outcome.viewPitchDeg << ", yaw " << outcome.viewYawDeg << "), "
        << fit.iterations << " iterations" << (fit.converged ? "" : " (not converged)") << ", "
        << std::setprecision(2) << outcome.fitMilliseconds << " ms\n";
   output.text = text.str();

@@ -45,12 +45,11 @@ std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& po
   return visibility;
 }
 
-double confidenceThreshold(const TrackerSettings& settings, const ClmModel& model) {
-  return makeOptimiser(resolveOptimiser(settings.fit.optimiser, model),
-                       settings.fit.optimiserSettings)
-                 ->usesExperts()
-             ? settings.minExpertConfidence
-             : settings.minConfidence;
+double landmarkScoreThreshold(const TrackerSettings& settings, const ClmModel& model) {
+  const bool experts =
+      makeOptimiser(resolveOptimiser(settings.fit.optimiser, model), settings.fit.optimiserSettings)
+          ->usesExperts();
+  return builtInScoreAt(experts, settings.minProbability);
 }
 
 Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSettings& settings)
@@ -58,18 +57,9 @@ Tracker::Tracker(const ClmModel& model, const Camera& camera, const TrackerSetti
       camera_(camera),
       settings_(settings),
       fitter_(model, camera, settings.fit),
-      usesExperts_(makeOptimiser(fitter_.settings().optimiser)->usesExperts()),
       smoother_(settings.smoothing),
       eyes_(model.scheme().normalisationPair()) {
   settings_.fit.optimiser = fitter_.settings().optimiser;  // "auto" resolved for this model
-}
-
-double Tracker::minConfidence() const {
-  return usesExperts_ ? settings_.minExpertConfidence : settings_.minConfidence;
-}
-
-double Tracker::viewSearchConfidence() const {
-  return usesExperts_ ? settings_.viewSearchExpertConfidence : settings_.viewSearchConfidence;
 }
 
 Tracker::~Tracker() = default;
@@ -92,12 +82,6 @@ void Tracker::setState(const FitState& state, int view) {
   view_ = view;
   lastFace_.reset();
   smoother_.restart();
-}
-
-bool Tracker::wantsViewSearch(const FitResult& fit) const {
-  if (std::isfinite(fit.viewProbability))
-    return fit.viewProbability < settings_.viewSearchProbability;
-  return fit.searchScore() < viewSearchConfidence();
 }
 
 FitState Tracker::nextStart() const {
@@ -140,15 +124,12 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
   if (std::sqrt(mahalanobis) > settings_.maxShapeRms * std::sqrt(std::max(1, shape.modeCount()))) {
     return TrackFailure::ImplausibleShape;
   }
-  // A fit the point refiner checked is judged on the check's probability, else on the search's.
-  const double least =
-      std::isnan(fit.searchConfidence) ? minConfidence() : settings_.minCheckProbability;
-  if (fit.confidence < least) return TrackFailure::LowConfidence;
+  if (!(fit.probability >= settings_.minProbability)) return TrackFailure::LowConfidence;
   return TrackFailure::None;
 }
 
 FitState Tracker::carriedState(const FitResult& fit) const {
-  if (std::isnan(fit.searchConfidence)) return fit.state;  // unchecked: the search's own state
+  if (!fit.refined) return fit.state;  // the search's own points: its own state
   // The search's state is near already: a few Levenberg-Marquardt steps, not the 60 a start from
   // nothing is allowed (each is a Jacobian and a small solve, a few hundredths of a millisecond).
   PointsFitSettings nearby;
@@ -234,7 +215,8 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
     // A prediction that overshoots (the head stopped or turned back) gets a second try from
     // where the face last was, before falling back to the detector.
     if (step.failure != TrackFailure::None && before_) attempt(*state_, view_);
-    if (step.fit && wantsViewSearch(*step.fit)) {
+    if (step.fit &&
+        wantsViewSearch(*step.fit, settings_.viewSearchBelow, settings_.viewSearchAll)) {
       const auto begin = std::chrono::steady_clock::now();
       const auto passes = [this](const FitResult& fit) { return judge(fit) == TrackFailure::None; };
       step.fit =
@@ -275,7 +257,7 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
   }
   if (step.fit) {
     step.row.success = step.failure == TrackFailure::None;
-    step.row.confidence = step.fit->confidence;
+    step.row.confidence = step.fit->probability;
     step.row.view = step.fit->view;
     step.row.pose = step.fit->state.pose;
     step.row.points = step.fit->points;

@@ -30,25 +30,6 @@ class VideoReader;
 // with a still image's fit; the tracker reads the fields that struct names as read by both) and
 // the tracker's own: failure thresholds, motion, view search, smoothing, faces.
 struct TrackerSettings : FaceSearchSettings {
-  // A confidence below this marks the frame as failed. Two scales: template optimisers report a
-  // mean NCC in [-1, 1]; rlms (Optimiser::usesExperts) the patch experts' mean response in (0, 1),
-  // a probability that the points are right. The tracker uses the one matching its optimiser.
-  double minConfidence = 0.35;
-  // Measured (tests/unit/track/expert_confidence_measure_test.cpp: a held-out procedural head
-  // turning 0 -> -60 -> +60 -> 0 degrees, and non-face frames searched from each frame's start as
-  // a track would, neighbouring views included): with the test fixture's model, good fits scored
-  // 0.33-0.90 (0-1.3% below 0.35), uniform noise 0.14-0.45 (78-93% below 0.35), blurred noise
-  // 0.12-0.50 (73-100%), blank frames 0.01-0.13 (all); with a model trained on 805 photos
-  // (real16), good fits 0.52-0.67, drifting fits at |yaw| >= 45 (error 0.1-0.2) 0.46-0.55, but
-  // uniform noise 0.34-0.62 and blurred noise 0.36-0.61 (1% and 0% below 0.35), blank 0.07-0.19.
-  // The experts' scale depends on the model: 0.35 keeps the good fits of both and rejects blank
-  // frames, and most noise for the small model; a model like real16 needs about 0.45 (all its
-  // good fits kept, 69% of uniform noise rejected). The default is for models trained with
-  // photos, the ones rlms is for: on 100 LFPW training photos held out of such a model, 0.44
-  // kept 95% of the right fits and accepted 5% of fits started half an eye distance off
-  // (docs/real-faces.md); on the 20 LFPW photo sequences 0.45 left 42 tracked frames with an error
-  // above 0.3 where 0.35 left 311. Models trained on renders only may want 0.35.
-  double minExpertConfidence = 0.45;
   // Root mean square of b_k / SD_k beyond which the shape is implausible: a real face sits near 1;
   // with every mode clamped to +-3 SD, 2.5 means most modes are pressed against their limits.
   double maxShapeRms = 2.5;
@@ -57,19 +38,6 @@ struct TrackerSettings : FaceSearchSettings {
   // pose change (constant-velocity prediction; the shape is not extrapolated), so a turning head
   // does not leave the search a growing lag to make up. 0 starts from the previous pose.
   double motionPrediction = 1.0;
-  // A frame tracked with a mean NCC below this is searched again from the neighbouring views in
-  // yaw (half-way to their centres), and the better result kept if its NCC is higher by the
-  // margin: a head turning past a view's range is caught by the next view before it is lost.
-  // 0 switches the search off.
-  double viewSearchConfidence = 0.7;
-  // The same for rlms, on the experts' scale; off by default (with a model whose views are
-  // calibrated, FaceSearchSettings::viewSearchProbability takes over from both). Different views'
-  // experts do not score on one scale, and on franck.mp4 (a frontal talking face whose frames score
-  // 0.45-0.6) a search at 0.55 let a neighbouring view win on noise every few hundred frames and
-  // walk the fit into a +-60 degree view (117-225 such frames, the points collapsing sideways);
-  // off, none. On procedural heads turning to +-80 degrees the rlms error at 30-60 degrees was
-  // 0.112 / 0.107 off against 0.124 / 0.102 at 0.55 (left / right; docs/real-faces.md).
-  double viewSearchExpertConfidence = 0.0;
   // Temporal smoothing of the written points (off by default). Only the rows' points are
   // smoothed: every frame is still searched from the raw fit, the pose, confidences and success
   // are the fit's, and a failed or re-detected frame restarts the filter with its points as fitted.
@@ -89,10 +57,10 @@ struct TrackerSettings : FaceSearchSettings {
 // lags by the selector's hysteresis), so the answer depends on the fitted pose alone. n entries.
 std::vector<Visibility> landmarkVisibility(const ClmModel& model, const Pose& pose);
 
-// The confidence below which a frame fails under `settings` with `model`: minExpertConfidence
-// when its optimiser (resolved for the model) matches patch experts (rlms), minConfidence
-// otherwise. The same scale as each landmark's confidence, so the studio marks landmarks below it.
-double confidenceThreshold(const TrackerSettings& settings, const ClmModel& model);
+// The score (FitResult::landmarkConfidence, on the scale of `settings`' optimiser resolved for
+// `model`) below which the studio marks a landmark as doubtful: where the built-in curve of that
+// optimiser's scores (core/fit/fit_probability.hpp) reaches settings.minProbability.
+double landmarkScoreThreshold(const TrackerSettings& settings, const ClmModel& model);
 
 // Why a frame failed (or None).
 enum class TrackFailure { None, NoFace, LowConfidence, ImplausibleShape, LeftImage };
@@ -140,21 +108,14 @@ class Tracker {
 
   Fitter& fitter() { return fitter_; }
   const TrackerSettings& settings() const { return settings_; }
-  // True when the fitter's optimiser matches patch experts (rlms): its confidences are the
-  // experts' mean response and the expert thresholds apply.
-  bool usesExperts() const { return usesExperts_; }
-  double minConfidence() const;
-  double viewSearchConfidence() const;
 
  private:
   TrackFailure judge(const FitResult& fit) const;
-  // The state a passing frame hands to the next: for a checked fit, the state nearest the
-  // search's that reproduces the refined points the check passed (stateNearPoints), so that the
+  // The state a passing frame hands to the next: for a refined fit, the state nearest the
+  // search's that reproduces the refined points (stateNearPoints), so that the
   // next search starts where the output points are, not where the search's own 3D state drifted;
   // otherwise the search's state.
   FitState carriedState(const FitResult& fit) const;
-  // Whether a frame's fit is also searched from the neighbouring views.
-  bool wantsViewSearch(const FitResult& fit) const;
   FaceDetector& detector();
   // The frame in grey (8-bit BGR and BGRA converted into grey_; any other type as it is).
   const cv::Mat& greyOf(const cv::Mat& frame);
@@ -164,7 +125,6 @@ class Tracker {
   Camera camera_;
   TrackerSettings settings_;
   Fitter fitter_;
-  bool usesExperts_ = false;
   std::unique_ptr<FaceDetector> detector_;
   FaceSource faceSource_;
   std::optional<FitState> state_;

@@ -208,25 +208,15 @@ std::vector<TrackerOption> buildOptions() {
                            return s.fit.optimiserSettings.rlmsRegularisation;
                          }));
 
-  // --- Failure (clm3d track; the check's probability: fit too)
-  // ------------------------------------------------------------------
-  options.push_back(real("min-confidence", "Lowest confidence (NCC)", "Failure", track, -1.0, 1.0,
-                         2,
-                         "mean NCC below which a frame counts as failed and the face is "
-                         "re-detected (template optimisers)",
-                         [](S& s) -> double& { return s.minConfidence; }));
-  options.push_back(real("min-expert-confidence", "Lowest confidence (rlms)", "Failure", track, 0.0,
-                         1.0, 2,
-                         "the same for rlms: the patch experts' mean response (0..1) below which "
-                         "a frame counts as failed",
-                         [](S& s) -> double& { return s.minExpertConfidence; }));
-  options.push_back(real("min-check-probability", "Lowest check probability", "Failure", search,
-                         0.0, 1.0, 2,
-                         "models whose point refiner has a check (trained with photos): the "
-                         "check's probability that the refined points are right below which a "
-                         "frame counts as failed (the two thresholds above are then not used); "
-                         "a photo's fit below it is rejected and the next face searched",
-                         [](S& s) -> double& { return s.minCheckProbability; }));
+  // --- Failure (the probability: every command; the rest clm3d track) -------------------------
+  options.push_back(real("min-probability", "Lowest probability", "Failure", search, 0.0, 1.0, 2,
+                         "the probability that a fit is right (the point refiner's check for "
+                         "models trained with photos, else the search's score on its view's "
+                         "calibration or built-in curve; docs/fitting.md#one-confidence) below "
+                         "which a frame counts as failed and the face is re-detected, and a "
+                         "photo's fit is rejected and the next face searched",
+                         [](S& s) -> double& { return s.minProbability; }));
+  options.back().formerName = "min-check-probability";
   options.push_back(real("max-shape-rms", "Largest shape RMS", "Failure", track, 0.1, 10.0, 2,
                          "root mean square of the shape parameters in standard deviations beyond "
                          "which a fit counts as failed (implausible shape)",
@@ -242,22 +232,17 @@ std::vector<TrackerOption> buildOptions() {
                          "share of the last frame-to-frame pose change each frame's start is "
                          "moved on by (0 = start from the previous pose)",
                          [](S& s) -> double& { return s.motionPrediction; }));
-  options.push_back(real("view-search", "View search below (NCC)", "Motion", track, 0.0, 1.0, 2,
-                         "mean NCC below which a frame is also searched from the neighbouring "
-                         "views (0 = never; template optimisers)",
-                         [](S& s) -> double& { return s.viewSearchConfidence; }));
-  options.push_back(real("view-search-expert", "View search below (rlms)", "Motion", track, 0.0,
-                         1.0, 2,
-                         "the same for rlms: the patch experts' mean response (0..1) below which "
-                         "a frame is also searched from the neighbouring views (0 = never)",
-                         [](S& s) -> double& { return s.viewSearchExpertConfidence; }));
-  options.push_back(real("view-search-probability", "View search below (calibrated)", "Search",
-                         search, 0.0, 1.0, 2,
-                         "with a model whose views are calibrated (trained with photos): the "
-                         "probability below which a fit is also searched from the neighbouring "
-                         "views in yaw, the most probable kept (0 = never; replaces --view-search "
-                         "and --view-search-expert for such models)",
-                         [](S& s) -> double& { return s.viewSearchProbability; }));
+  options.push_back(real("view-search", "View search below", "Search", search, 0.0, 1.0, 2,
+                         "the probability below which a fit is also searched from the "
+                         "neighbouring views in yaw, the most probable kept (0 = never)",
+                         [](S& s) -> double& { return s.viewSearchBelow; }));
+  options.back().formerName = "view-search-probability";
+  options.push_back(flag(
+      "view-search-all", "View search of every fit", "Search", search,
+      "search the neighbouring views of every fit below --view-search, also "
+      "those whose probability does not compare views: the point refiner's "
+      "check's and rlms's without calibration (docs/fitting.md#one-confidence)",
+      [](S& s) -> bool& { return s.viewSearchAll; }, false));
 
   // --- Smoothing (clm3d track; core/track/track_smoother.hpp) ------------------------------------
   options.push_back(flag(
@@ -312,7 +297,9 @@ std::map<std::string, std::string> changedTrackerOptions(const TrackerSettings& 
 
 TrackerSettings trackerSettingsFrom(const std::map<std::string, std::string>& options,
                                     const std::string& source) {
-  return settingsFromOptions<TrackerSettings>(trackerOptions(), options, source, "tracker option");
+  std::map<std::string, std::string> current = options;
+  for (const std::string_view retired : kRetiredTrackerOptions) current.erase(std::string(retired));
+  return settingsFromOptions<TrackerSettings>(trackerOptions(), current, source, "tracker option");
 }
 
 }  // namespace clm3d

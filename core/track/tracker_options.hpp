@@ -27,6 +27,12 @@ const std::vector<TrackerOption>& trackerOptions();
 // nullptr when there is no option of that name.
 const TrackerOption* findTrackerOption(std::string_view name);
 
+// Options of earlier versions that are gone, each on a scale of its own that has no meaning in the
+// one probability that replaced them (--min-probability, --view-search): a project that saved one
+// loads without it (trackerSettingsFrom drops them), the command line refuses them as unknown.
+inline constexpr std::string_view kRetiredTrackerOptions[] = {
+    "min-confidence", "min-expert-confidence", "view-search-expert"};
+
 // The options whose value differs from the default, name -> text: what a project remembers.
 std::map<std::string, std::string> changedTrackerOptions(const TrackerSettings& settings);
 // Defaults with `options` applied. InputError naming `source` (a file, or "the command line") and

@@ -119,7 +119,7 @@ std::vector<Search> searchFace(const ClmModel& model, const std::vector<ViewChec
     } catch (const InputError&) {
       continue;  // a start off the image
     }
-    if (!std::isfinite(result.confidence) || result.view < 0) continue;
+    if (!std::isfinite(result.searchScore) || result.view < 0) continue;
     double error = 0.0;
     int counted = 0;
     for (int i = 0; i < n; ++i) {
@@ -130,7 +130,7 @@ std::vector<Search> searchFace(const ClmModel& model, const std::vector<ViewChec
     if (counted == 0 || !std::isfinite(error)) continue;
     const int pooled = pooledView(model, result.view);
     searches.push_back(
-        {pooled, result.confidence, error / counted / box < settings.rightBelow,
+        {pooled, result.searchScore, error / counted / box < settings.rightBelow,
          viewCheckFeatures(model, result.view, layouts[static_cast<std::size_t>(pooled)], image,
                            result.points)});
   }

@@ -79,7 +79,7 @@ void BM_FitFrame640x480(benchmark::State& state, const std::string& optimiser) {
     const FitResult result = fitter.fit(sequence.frames[frame], current, view);
     current = result.state;
     view = result.view;
-    benchmark::DoNotOptimize(result.confidence);
+    benchmark::DoNotOptimize(result.searchScore);
     if (++frame == sequence.frames.size()) {
       frame = 0;
       current = fitter.meanState(sequence.poses.front());

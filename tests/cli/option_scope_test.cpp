@@ -159,7 +159,7 @@ TEST(OptionScope, TrackRefusesThePhotoFitsOptionsAndFitTakesTheChecksThreshold) 
   ASSERT_TRUE(
       parses(OptionCommand::Fit, {"--min-check-probability", "0.7"},
              [&](CLI::App& command) { cli::addFitOptions(command, options, OptionCommand::Fit); }));
-  EXPECT_DOUBLE_EQ(imageFitSettings(options.tracker).minCheckProbability, 0.7);
+  EXPECT_DOUBLE_EQ(imageFitSettings(options.tracker).minProbability, 0.7);
 }
 
 // --fov, the one search option outside the table, is the camera of what each command runs: the
@@ -185,6 +185,7 @@ TEST(OptionScope, EachCommandsHelpListsExactlyItsOptions) {
     // Listed: its name and its help (`clm3d batch --threads` is the batch's own, not training's).
     const auto listed = [&](const OptionSpec& option) {
       return (test::contains(help.output, "--" + option.name + " ") ||
+              test::contains(help.output, "--" + option.name + ",") ||
               test::contains(help.output, "--" + option.name + "\n")) &&
              test::contains(help.output, option.help);
     };

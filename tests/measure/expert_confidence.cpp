@@ -3,7 +3,7 @@
 // non-face frames searched from the same start as a track would (uniform noise, blurred noise, a
 // blank frame, the face moved out of the search: on the grey background the same as blank); and
 // the agreement of visibility rules with the renders' depth test. The numbers behind
-// TrackerSettings::minExpertConfidence and viewSearchExpertConfidence (docs/tracking.md) and the
+// built-in curve of the experts' response (core/fit/fit_probability.hpp, docs/tracking.md) and the
 // visibility rule (docs/tracks-csv.md). CLM3D_MEASURE_MODEL picks the model (default: the test
 // fixture's), CLM3D_MEASURE_HEAD_SEED the head (default 9001), CLM3D_MEASURE_SMALL=1 renders
 // 320x240 frames with 56 pixels between the eyes instead of 640x480 with 90. The documented runs:
@@ -69,7 +69,7 @@ TEST(Measure, ExpertConfidence) {
 
   TrackerSettings tracking;
   tracking.fit.optimiser = "rlms";
-  tracking.minExpertConfidence = 0.0;  // measure, never fail on confidence
+  tracking.minProbability = 0.0;  // measure, never fail on the probability
   Tracker tracker(model, sequence.camera(), tracking);
   // The non-face frames are searched as a track would: from the frame's start, then from the
   // neighbouring views when the confidence is low (the best of up to three searches).
@@ -96,7 +96,7 @@ TEST(Measure, ExpertConfidence) {
     const double interOcular = (frame.points.col(7) - frame.points.col(10)).norm();
     const double error =
         test::meanPointError(step.row.points, frame.points, frame.visible) / interOcular;
-    (error < 0.1 ? right : wrong).push_back(step.fit->confidence);
+    (error < 0.1 ? right : wrong).push_back(step.fit->searchScore);
 
     // Non-face frames searched from the start this frame had.
     cv::Mat noise(frame.bgr.size(), CV_8UC3);
@@ -115,7 +115,7 @@ TEST(Measure, ExpertConfidence) {
                                                       {"face moved away", shifted}}) {
       probe.setState(start, step.fit->view);
       const TrackStep lost = probe.track(image, i, i / 30.0);
-      if (lost.fit) nonFace[name].push_back(lost.fit->confidence);
+      if (lost.fit) nonFace[name].push_back(lost.fit->searchScore);
     }
     // Visibility rules against the renders' depth test: the nearest view's (the tracker's), the
     // fit's own view's (FitResult::modelled), and facing: the outward direction from the ear axis
@@ -137,7 +137,8 @@ TEST(Measure, ExpertConfidence) {
       ++points;
     }
     std::cout << "frame " << i << " yaw " << frame.angles.yawDeg << ": confidence "
-              << step.fit->confidence << ", error " << error << ", view " << step.fit->view << "\n";
+              << step.fit->searchScore << ", error " << error << ", view " << step.fit->view
+              << "\n";
   }
   std::cout << "[ visibility agrees with the depth test, of " << points
             << " landmark-frames: nearest view " << agreeNearest << ", fit's view " << agreeModelled

@@ -772,8 +772,8 @@ void TrackPage::showFrame() {
   frameView_->setLandmarks(
       points, colours,
       landmarkMarks(session_.trackRow(current_), points,
-                    session_.model() ? confidenceThreshold(trackerSettings_, *session_.model())
-                                     : trackerSettings_.minConfidence));
+                    session_.model() ? landmarkScoreThreshold(trackerSettings_, *session_.model())
+                                     : builtInScoreAt(false, trackerSettings_.minProbability)));
 
   const bool keyframe = session_.truth().frameCount() > current_ &&
                         session_.truth().keyframe[static_cast<std::size_t>(current_)];

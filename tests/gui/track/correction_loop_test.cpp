@@ -174,7 +174,7 @@ class CorrectionLoopTest : public QObject {
     QVERIFY(!form.findChild<QWidget*>(QStringLiteral("tilt-steps")));
     // The form reads back what it was given, and the defaults give no changed option.
     TrackerSettings settings;
-    settings.minExpertConfidence = 0.4;
+    settings.minProbability = 0.4;
     settings.fit.scales = 1;
     settings.detector = DetectorKind::DlibHog;
     settings.fit.alphaMask = false;
@@ -205,7 +205,7 @@ class CorrectionLoopTest : public QObject {
       for (QWidget* widget : QApplication::topLevelWidgets()) {
         auto* dialog = qobject_cast<TrackerSettingsDialog*>(widget);
         if (!dialog || !dialog->isVisible()) continue;
-        dialog->findChild<QDoubleSpinBox*>("min-expert-confidence")->setValue(0.4);
+        dialog->findChild<QDoubleSpinBox*>("min-probability")->setValue(0.4);
         dialog->findChild<QDoubleSpinBox*>("motion-prediction")->setValue(0.5);
         edited = true;
         dialog->accept();
@@ -215,8 +215,8 @@ class CorrectionLoopTest : public QObject {
     QTest::mouseClick(page_->findChild<QPushButton*>("trackerSettingsButton"), Qt::LeftButton);
     QVERIFY(test::waitUntil([&] { return edited; }, 5000));
     QCOMPARE(modified.count(), 1);
-    QCOMPARE(page_->trackerSettings().minExpertConfidence, 0.4);
-    const std::map<std::string, std::string> expected{{"min-expert-confidence", "0.4"},
+    QCOMPARE(page_->trackerSettings().minProbability, 0.4);
+    const std::map<std::string, std::string> expected{{"min-probability", "0.4"},
                                                       {"motion-prediction", "0.5"}};
     QCOMPARE(project_.trackerOptions, expected);
     // Saved and opened again, a page starts with them.
@@ -226,7 +226,7 @@ class CorrectionLoopTest : public QObject {
       TrackPage other;
       other.setProject(&reopened);
       QCOMPARE(other.trackerSettings().motionPrediction, 0.5);
-      QCOMPARE(other.trackerSettings().minExpertConfidence, 0.4);
+      QCOMPARE(other.trackerSettings().minProbability, 0.4);
     }
     // A bad value in the project shows the error naming the file and the option; defaults stay.
     reopened.trackerOptions = {{"scales", "99"}};

@@ -170,7 +170,7 @@ class TrackPageTest : public QObject {
   // the tracker's threshold ringed (landmark_marks_test checks the drawing itself).
   void theFrameViewMarksWhatTheTrackerWrote() {
     const double threshold =
-        confidenceThreshold(page_->trackerSettings(), *page_->session().model());
+        landmarkScoreThreshold(page_->trackerSettings(), *page_->session().model());
     int hidden = 0;
     for (int f = 0; f < kFrames; ++f) {
       page_->setCurrentFrame(f);

@@ -38,7 +38,7 @@ TEST(StartSearch, TheGridRecoversAStartOutsideTheCaptureRange) {
   const FitResult alone = fitFromBestStart(fitter, model, scene.image, far, {}, &searches);
   EXPECT_EQ(searches, 1);
   const FitResult plain = fitter.fit(scene.image, far);
-  EXPECT_EQ(alone.confidence, plain.confidence);
+  EXPECT_EQ(alone.probability, plain.probability);
   EXPECT_TRUE(alone.points.isApprox(plain.points));
 
   StartSearchSettings grid;
@@ -46,7 +46,7 @@ TEST(StartSearch, TheGridRecoversAStartOutsideTheCaptureRange) {
   grid.shift = 0.6;
   const FitResult searched = fitFromBestStart(fitter, model, scene.image, far, grid, &searches);
   EXPECT_EQ(searches, 9);  // 9 starts
-  EXPECT_GE(searched.confidence, alone.confidence);
+  EXPECT_GE(searched.probability, alone.probability);
   EXPECT_LT(errorOf(searched, scene), 0.1) << "from the far start alone: " << errorOf(alone, scene);
   EXPECT_LT(errorOf(searched, scene), 0.5 * errorOf(alone, scene));
 }
@@ -58,21 +58,44 @@ TEST(StartSearch, TheGridRunsOnlyWhenTheStartsFitIsBelowTheThreshold) {
   const FitState far = shiftedStart(model, fitter, scene.truth, Eigen::Vector2d(0.6, 0.0));
   const FitResult fromTruth = fitter.fit(scene.image, scene.truth);
   const FitResult fromFar = fitter.fit(scene.image, far);
-  ASSERT_GT(fromTruth.confidence, fromFar.confidence);
+  ASSERT_GT(fromTruth.probability, fromFar.probability);
   StartSearchSettings grid;
   grid.steps = 1;
   grid.shift = 0.6;
-  grid.onlyBelow = 0.5 * (fromTruth.confidence + fromFar.confidence);
+  grid.onlyBelow = 0.5 * (fromTruth.probability + fromFar.probability);
 
   int searches = 0;
   const FitResult trusted =
       fitFromBestStart(fitter, model, scene.image, scene.truth, grid, &searches);
   EXPECT_EQ(searches, 1);
-  EXPECT_EQ(trusted.confidence, fromTruth.confidence);
+  EXPECT_EQ(trusted.probability, fromTruth.probability);
 
   const FitResult doubted = fitFromBestStart(fitter, model, scene.image, far, grid, &searches);
   EXPECT_EQ(searches, 9);
   EXPECT_LT(errorOf(doubted, scene), 0.5 * errorOf(fromFar, scene));
+}
+
+// A doubted fit is searched from the neighbouring views, unless its probability does not compare
+// views (the point check's, learnt on near-frontal photos; the experts' raw response on one curve)
+// and that was not asked for.
+TEST(ViewSearch, DoubtedFitsAreSearchedAndOnesThatDoNotCompareViewsOnlyWhenAsked) {
+  FitResult fit;
+  fit.probability = 0.6;
+  fit.probabilitySource = ProbabilitySource::BuiltInNccCurve;
+  EXPECT_TRUE(wantsViewSearch(fit, 0.9, false));
+  EXPECT_FALSE(wantsViewSearch(fit, 0.5, false)) << "not doubted";
+  EXPECT_FALSE(wantsViewSearch(fit, 0.0, true)) << "off";
+  for (const ProbabilitySource source :
+       {ProbabilitySource::ViewCheck, ProbabilitySource::ViewCalibration}) {
+    fit.probabilitySource = source;
+    EXPECT_TRUE(wantsViewSearch(fit, 0.9, false)) << toString(source);
+  }
+  for (const ProbabilitySource source :
+       {ProbabilitySource::Check, ProbabilitySource::BuiltInExpertCurve}) {
+    fit.probabilitySource = source;
+    EXPECT_FALSE(wantsViewSearch(fit, 0.9, false)) << toString(source);
+    EXPECT_TRUE(wantsViewSearch(fit, 0.9, true)) << toString(source);
+  }
 }
 
 TEST(TiltAngles, NearestTurnsFirstBothWays) {

@@ -59,7 +59,7 @@ inline void expectRecovery(const ClmModel& model, const std::string& optimiser, 
     EXPECT_LT(r.after, yawDeg == 0.0 ? 0.75 : 1.5) << label;  // 0.0125 / 0.025 inter-ocular
     EXPECT_LT(r.after, 0.3 * r.before) << label;
   }
-  EXPECT_GT(r.fit.confidence, 0.55) << label;
+  EXPECT_GT(r.fit.searchScore, 0.55) << label;
 }
 
 }  // namespace clm3d::test

@@ -79,7 +79,7 @@ TEST(ResponseMap, PeaksAtTheTrueLandmark) {
 TEST(RlmsOptimiser, RecoversAPerturbedFrontalHead) {
   const test::RecoveryResult r = test::runRecovery(fitTestModel(), "rlms", 0.0);
   std::cout << "[ rlms frontal: start " << r.before << " px, end " << r.after << " px, floor "
-            << r.floor << " px, confidence " << r.fit.confidence << " ]\n";
+            << r.floor << " px, confidence " << r.fit.searchScore << " ]\n";
   EXPECT_GT(r.before, 0.08 * r.interOcular);
   EXPECT_LT(r.after, 0.4 * r.before);
   EXPECT_LT(r.after, 0.04 * r.interOcular);
@@ -113,10 +113,10 @@ TEST(RlmsOptimiser, ConfidenceRejectsADisplacedFit) {
   const double off = scene.interOcular / 3.0;
   const FitState displaced = test::perturbState(scene, model, off, off / 2, 0.0, 1.0, 0.0);
   const FitResult wrong = fitter.fit(scene.image, displaced);
-  std::cout << "[ confidence right " << right.confidence << ", displaced " << wrong.confidence
+  std::cout << "[ confidence right " << right.searchScore << ", displaced " << wrong.searchScore
             << " ]\n";
-  EXPECT_GT(right.confidence, 0.5);
-  EXPECT_LT(wrong.confidence, 0.5 * right.confidence);
+  EXPECT_GT(right.searchScore, 0.5);
+  EXPECT_LT(wrong.searchScore, 0.5 * right.searchScore);
 }
 
 // rlms's confidence needs no synthetic templates, so a search does not make them: the overlay asks

@@ -28,14 +28,12 @@ TEST(Project, TrackerModelAndOptionsRoundTrip) {
   const test::TempDir dir;
   Project project = createProject(dir.path() / "tracked");
   project.trackerModel = project.folder / "models" / "m.clm3d";
-  project.trackerOptions = {{"optimiser", "rlms"},
-                            {"min-expert-confidence", "0.4"},
-                            {"scales", "2"},
-                            {"no-alpha", "true"}};
+  project.trackerOptions = {
+      {"optimiser", "rlms"}, {"min-probability", "0.4"}, {"scales", "2"}, {"no-alpha", "true"}};
   saveProject(project);
   const std::string text = test::readFile(project.file());
   EXPECT_NE(text.find("\"models/m.clm3d\""), std::string::npos) << text;
-  EXPECT_NE(text.find("\"min-expert-confidence\": 0.4"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"min-probability\": 0.4"), std::string::npos) << text;
   const Project back = loadProject(project.folder);
   EXPECT_EQ(back.trackerModel, project.trackerModel);
   EXPECT_EQ(back.trackerOptions, project.trackerOptions);

@@ -110,7 +110,7 @@ TEST(ViewCheck, PointsThatCannotBeReadGiveNoFeaturesAndNoProbability) {
 
 // A check whose score is its bias alone gives every readable fit the bias's probability, and
 // refineFit puts it in FitResult::viewProbability; in a view the refiner did not learn it becomes
-// the fit's confidence.
+// the fit's probability.
 TEST(ViewCheck, AFinishedFitCarriesItsViewsCheck) {
   ClmModel model = test::fitTestModel();
   const int side = viewAtYaw(model, -30.0);
@@ -129,10 +129,10 @@ TEST(ViewCheck, AFinishedFitCarriesItsViewsCheck) {
   FitResult fit;
   fit.view = mirrored;
   fit.points = scene.truthPoints;
-  fit.confidence = 0.25;
+  fit.probability = 0.25;
   refineFit(model, scene.image, fit);
   EXPECT_NEAR(fit.viewProbability, expected, 1e-9);
-  EXPECT_EQ(fit.confidence, 0.25) << "a model without a refiner keeps the search's confidence";
+  EXPECT_EQ(fit.probability, 0.25) << "a model without a refiner keeps the search's probability";
   const int frontal = viewAtYaw(model, 0.0);
   FitResult unchecked;
   unchecked.view = frontal;

@@ -59,7 +59,8 @@ TEST(BatchSummary, EmptyCellsForMissingValuesAndQuotedMessages) {
   ok.status = ImageFitStatus::Ok;
   ok.fitMilliseconds = 3.14159;
   ok.fit = FitResult{};
-  ok.fit->confidence = 0.5;
+  ok.fit->probability = 0.5;
+  ok.fit->searchScore = 0.25;
   ok.fit->iterations = 7;
   ok.fit->converged = true;
   ok.viewPitchDeg = 0.0;
@@ -71,7 +72,7 @@ TEST(BatchSummary, EmptyCellsForMissingValuesAndQuotedMessages) {
   EXPECT_EQ(formatBatchFitSummary({ok, bad}),
             "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
             "iterations,converged,error\n"
-            "a.png,ok,3.142,,0.500000,,0.0,-30.0,7,1,\n"
+            "a.png,ok,3.142,,0.500000,0.250000,0.0,-30.0,7,1,\n"
             "\"b, \"\"odd\"\".jpg\",error,,,,,,,,,\"b.jpg: cannot be read, or so\"\n");
 }
 

@@ -133,6 +133,7 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
 
   ImageFitSettings plain;
   plain.refine = false;
+  plain.minProbability = 0.0;  // the fixture's experts, uncalibrated: the search's points kept
   ImageFitter unrefined(model, plain);
   const ImageFitOutcome searched = unrefined.fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(searched.status, ImageFitStatus::Ok) << searched.message;
@@ -146,7 +147,7 @@ TEST(ImageFitRefiner, ImageFitterAppliesTheModelsRefinerUnlessToldNotTo) {
   const Eigen::Matrix2Xd expected = placedMeanShape(model.refiner, searched.fit->points);
   EXPECT_LT((refined.fit->points - expected).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_GT((refined.fit->points - searched.fit->points).norm(), 1.0);
-  EXPECT_NEAR(refined.fit->confidence, kKnownCheckProbability, 1e-6);  // the check's
+  EXPECT_NEAR(refined.fit->probability, kKnownCheckProbability, 1e-6);  // the check's
   const LandmarkSet written = readLandmarks(dir / "out.pts", &Scheme::thesis25());
   for (int i = 0; i < 25; ++i)
     EXPECT_LT((written.point(i).head<2>() - expected.col(i)).norm(), 1e-3) << i;
@@ -181,7 +182,7 @@ TEST(ImageFitRefiner, MoreStartsMoveTheTrainedRefinersPointsOnlyForAFitTheCheckD
   const ImageFitOutcome single = fitWith(1, 0.0);
   const ImageFitOutcome always = fitWith(9, 0.0);
   ASSERT_TRUE(single.fit && always.fit);
-  const double probability = single.fit->confidence;
+  const double probability = single.fit->probability;
   ASSERT_GT(probability, 0.0);
   ASSERT_LT(probability, 1.0);
   ASSERT_GT((single.fit->points - always.fit->points).cwiseAbs().maxCoeff(), 1e-3);
@@ -233,19 +234,19 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   ImageFitter fitter(model, ImageFitSettings{});
   const ImageFitOutcome right = fitter.fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(right.status, ImageFitStatus::Ok) << right.message;
-  EXPECT_TRUE(std::isfinite(right.fit->searchConfidence));
-  EXPECT_GT(right.fit->confidence, 0.5);
-  EXPECT_LE(right.fit->confidence, 1.0);
-  // The confidence is the check's probability (a check of known output: the fit's confidence is
-  // its 0.8, the search's own kept as searchConfidence).
+  EXPECT_EQ(right.fit->probabilitySource, ProbabilitySource::Check);
+  EXPECT_GT(right.fit->probability, 0.5);
+  EXPECT_LE(right.fit->probability, 1.0);
+  // The probability is the check's (a check of known output: the fit's probability is its 0.8,
+  // the search's own score kept as searchScore).
   ClmModel known = model;
   known.refiner = knownRefiner();
   const ImageFitOutcome judged =
       ImageFitter(known, ImageFitSettings{}).fitFile(dir / "face.png", dir / "face.pts");
   ASSERT_EQ(judged.status, ImageFitStatus::Ok) << judged.message;
-  EXPECT_NEAR(judged.fit->confidence, kKnownCheckProbability, 1e-6);
-  EXPECT_TRUE(std::isfinite(judged.fit->searchConfidence));
-  EXPECT_GT(std::abs(judged.fit->searchConfidence - kKnownCheckProbability), 1e-3);
+  EXPECT_NEAR(judged.fit->probability, kKnownCheckProbability, 1e-6);
+  EXPECT_TRUE(std::isfinite(judged.fit->searchScore));
+  EXPECT_GT(std::abs(judged.fit->searchScore - kKnownCheckProbability), 1e-3);
   // Points moved by most of an eye distance stay wrong after refining, and the check says so.
   for (const Eigen::Vector2d& share : {Eigen::Vector2d(0.7, 0.4), Eigen::Vector2d(-0.6, -0.6)}) {
     const Eigen::Matrix2Xd moved = scene.truthPoints.colwise() + share * scene.interOcular;
@@ -267,7 +268,7 @@ TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
   const TrackStep lost = tracker.track(noise, 1, 0.04);
   EXPECT_FALSE(lost.row.success);
   ASSERT_TRUE(lost.fit.has_value());
-  EXPECT_LT(lost.fit->confidence, settings.minCheckProbability);
+  EXPECT_LT(lost.fit->probability, settings.minProbability);
 }
 
 // A still image whose fit the check rejects is reported as rejected, and its points are not
@@ -289,7 +290,7 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
   const ImageFitOutcome wrong = fitter.fitFile(dir / "noise.png", dir / "face.pts", dir / "b.pts");
   ASSERT_EQ(wrong.status, ImageFitStatus::Rejected) << wrong.message;
   ASSERT_TRUE(wrong.fit.has_value());
-  EXPECT_LT(wrong.fit->confidence, ImageFitSettings{}.minCheckProbability);
+  EXPECT_LT(wrong.fit->probability, ImageFitSettings{}.minProbability);
   EXPECT_NE(wrong.message.find("noise.png"), std::string::npos) << wrong.message;
   EXPECT_NE(wrong.message.find("rejects"), std::string::npos) << wrong.message;
   EXPECT_FALSE(fs::exists(dir / "b.pts"));
@@ -317,7 +318,7 @@ TEST(ImageFitRefiner, ATiltedFaceIsFoundInATurnedCopyOfThePhoto) {
   ImageFitter fitter(model, ImageFitSettings{});
   const ImageFitOutcome found = fitter.fitFile(dir / "tilted.png");
   ASSERT_EQ(found.status, ImageFitStatus::Ok) << found.message;
-  EXPECT_GE(found.fit->confidence, 0.5);
+  EXPECT_GE(found.fit->probability, 0.5);
   EXPECT_LT(meanPointError(found.fit->points, scene.truthPoints) / scene.interOcular, 0.15)
       << "tilted search: error "
       << meanPointError(found.fit->points, scene.truthPoints) / scene.interOcular;
@@ -340,13 +341,11 @@ TEST(ImageFitRefiner, APassingFrameContinuesFromItsRefinedPointsNotTheDetector) 
   model.refiner = test::photoRefiner();
   const FitScene scene = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   TrackerSettings settings;
-  settings.minConfidence = 0.999;  // the search's own thresholds, on either scale: not judged
-  settings.minExpertConfidence = 0.999;
   Tracker tracker(model, scene.camera, settings);
   tracker.setState(scene.truth, -1);
   const TrackStep first = tracker.track(scene.image, 0, 0.0);
   ASSERT_TRUE(first.row.success) << toString(first.failure);
-  ASSERT_LT(first.fit->searchConfidence, 0.999) << "the premise: a search below its threshold";
+  ASSERT_EQ(first.fit->probabilitySource, ProbabilitySource::Check);
   // The carried state reproduces the refined points the frame output closer than the search's own
   // state does. Not exactly: this fixture's refiner places a 2D mean shape that the 3D shape model
   // (modes clamped to +-3 SD) cannot reproduce (measured: 0.027 against the search's 0.029).
@@ -420,7 +419,7 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   Fitter fitter(model, scene.camera, FitSettings{});
   FaceSearch search;
   search.finish = [&](FitResult& fit) { refineFit(model, scene.image, fit); };
-  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  search.accepted = [](const FitResult& fit) { return fit.probability >= 0.5; };
   const auto error = [&](const FitResult& fit) {
     return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
   };
@@ -429,24 +428,24 @@ TEST(ImageFitRefiner, AFaceSearchTriesTheNextFaceWhileTheCheckRejectsTheFit) {
   const FitResult first =
       fitFromBestFace(fitter, model, scene.image, {background, face}, search, &tried);
   EXPECT_EQ(tried, 1);
-  EXPECT_LT(first.confidence, 0.5);
+  EXPECT_LT(first.probability, 0.5);
   EXPECT_GT(error(first), 0.5);
   search.maxFaces = 3;
   const FitResult next =
       fitFromBestFace(fitter, model, scene.image, {background, face}, search, &tried);
   EXPECT_EQ(tried, 2) << "stops at the first fit accepted";
-  EXPECT_GT(next.confidence, 0.5);
+  EXPECT_GT(next.probability, 0.5);
   EXPECT_LT(error(next), 0.1);
   // The first accepted fit is kept, even when a fit before it was more confident (the tracker's
   // verdict is not the confidence alone): here a verdict that wants a low probability.
-  search.accepted = [](const FitResult& fit) { return fit.confidence < 0.5; };
+  search.accepted = [](const FitResult& fit) { return fit.probability < 0.5; };
   const FitResult accepted =
       fitFromBestFace(fitter, model, scene.image, {face, background}, search, &tried);
   EXPECT_EQ(tried, 2);
-  EXPECT_LT(accepted.confidence, 0.5);
+  EXPECT_LT(accepted.probability, 0.5);
   EXPECT_GT(error(accepted), 0.5);
   // A box whose start leaves the image is passed over; with nothing else, its error is thrown.
-  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  search.accepted = [](const FitResult& fit) { return fit.probability >= 0.5; };
   FaceBox outside = face;
   outside.box.x += 20.0 * scene.image.cols;
   const FitResult afterOutside =
@@ -498,20 +497,20 @@ TEST(ImageFitRefiner, AFitTheCheckDoubtsIsSearchedAgainFromRescaledStarts) {
   FaceDetector detector;  // not used: the face is given and no tilted copy is searched
   FaceSearch search;
   search.finish = [&](FitResult& fit) { refineFit(model, scene.image, fit); };
-  search.accepted = [](const FitResult& fit) { return fit.confidence >= 0.5; };
+  search.accepted = [](const FitResult& fit) { return fit.probability >= 0.5; };
   const auto error = [&](const FitResult& fit) {
     return meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
   };
   const std::optional<FitResult> narrow =
       fitFromDetections(fitter, model, scene.image, detector, {face}, search);
   ASSERT_TRUE(narrow.has_value());
-  ASSERT_LT(narrow->confidence, 0.97) << "the premise: the check doubts the fit";
+  ASSERT_LT(narrow->probability, 0.97) << "the premise: the check doubts the fit";
   ASSERT_GT(error(*narrow), 0.15) << "the premise: the fit is off";
   search.widerBelow = 0.97;
   const std::optional<FitResult> wider =
       fitFromDetections(fitter, model, scene.image, detector, {face}, search);
   ASSERT_TRUE(wider.has_value());
-  EXPECT_GT(wider->confidence, narrow->confidence);
+  EXPECT_GT(wider->probability, narrow->probability);
   EXPECT_LT(error(*wider), 0.1);
 }
 
@@ -527,7 +526,7 @@ TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndIsJudged
   Fitter fitter(model, side.camera, FitSettings{});
   FitResult searched = fitter.fit(side.image, side.truth);
   ASSERT_FALSE(model.views[static_cast<std::size_t>(searched.view)].refined);
-  ASSERT_TRUE(std::isfinite(searched.viewProbability));
+  ASSERT_EQ(searched.probabilitySource, ProbabilitySource::ViewCalibration);
   FitResult finished = searched;
   refineFit(model, side.image, finished);
   EXPECT_EQ(finished.points, searched.points);
@@ -535,8 +534,9 @@ TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndIsJudged
   const double checked = viewCheckProbability(model, searched.view, side.image, searched.points);
   ASSERT_TRUE(std::isfinite(checked));
   EXPECT_EQ(finished.viewProbability, checked);
-  EXPECT_EQ(finished.confidence, checked);
-  EXPECT_EQ(finished.searchConfidence, searched.confidence);
+  EXPECT_EQ(finished.probability, checked);
+  EXPECT_EQ(finished.probabilitySource, ProbabilitySource::ViewCheck);
+  EXPECT_EQ(finished.searchScore, searched.searchScore);
 
   const FitScene front = makeFitScene(model, 0.0, 3.0, kHeldOutHead);
   FitResult frontal = fitter.fit(front.image, front.truth);
@@ -544,8 +544,9 @@ TEST(ImageFitRefiner, AViewTheRefinerDidNotLearnKeepsTheSearchsPointsAndIsJudged
   const FitResult raw = frontal;
   refineFit(model, front.image, frontal);
   EXPECT_NE(frontal.points, raw.points);
-  EXPECT_NE(frontal.confidence, raw.viewProbability) << "the check's probability";
-  EXPECT_EQ(frontal.searchConfidence, raw.confidence);
+  EXPECT_NE(frontal.probability, raw.probability) << "the check's probability";
+  EXPECT_EQ(frontal.probabilitySource, ProbabilitySource::Check);
+  EXPECT_EQ(frontal.searchScore, raw.searchScore);
 }
 
 }  // namespace

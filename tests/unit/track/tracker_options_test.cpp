@@ -36,8 +36,8 @@ TEST(TrackerOptions, NamesAreUniqueAndDescribed) {
     }
   }
   // The options issue 13 asks the studio to set, under the command line's names.
-  for (const char* name : {"optimiser", "scales", "detector", "min-confidence",
-                           "min-expert-confidence", "max-shape-rms", "motion-prediction"}) {
+  for (const char* name : {"optimiser", "scales", "detector", "min-probability", "view-search",
+                           "max-shape-rms", "motion-prediction"}) {
     EXPECT_NE(findTrackerOption(name), nullptr) << name;
   }
   EXPECT_EQ(findTrackerOption("no-such-option"), nullptr);
@@ -45,7 +45,7 @@ TEST(TrackerOptions, NamesAreUniqueAndDescribed) {
 
 TEST(TrackerOptions, DefaultsAreTheSettingsDefaultsAndNothingIsChanged) {
   const TrackerSettings defaults;
-  EXPECT_EQ(findTrackerOption("min-expert-confidence")->defaultText(), "0.45");
+  EXPECT_EQ(findTrackerOption("min-probability")->defaultText(), "0.5");
   EXPECT_EQ(findTrackerOption("optimiser")->defaultText(), defaults.fit.optimiser);
   EXPECT_EQ(findTrackerOption("no-alpha")->defaultText(), "false");
   EXPECT_EQ(findTrackerOption("detector")->defaultText(), "cascade");
@@ -65,28 +65,46 @@ TEST(TrackerOptions, ChangedOptionsRoundTripThroughTexts) {
   settings.fit.optimiser = "rlms";
   settings.fit.scales = 2;
   settings.fit.alphaMask = false;
-  settings.minExpertConfidence = 0.3;
+  settings.minProbability = 0.3;
   settings.motionPrediction = 0.5;
   settings.maxShapeRms = 3.25;
   const std::map<std::string, std::string> changed = changedTrackerOptions(settings);
   EXPECT_EQ(changed.size(), 6u);
-  EXPECT_EQ(changed.at("min-expert-confidence"), "0.3");
+  EXPECT_EQ(changed.at("min-probability"), "0.3");
   EXPECT_EQ(changed.at("no-alpha"), "true");
   EXPECT_EQ(changed.at("optimiser"), "rlms");
   const TrackerSettings back = trackerSettingsFrom(changed, "test");
   EXPECT_EQ(back.fit.optimiser, "rlms");
   EXPECT_EQ(back.fit.scales, 2);
   EXPECT_FALSE(back.fit.alphaMask);
-  EXPECT_DOUBLE_EQ(back.minExpertConfidence, 0.3);
+  EXPECT_DOUBLE_EQ(back.minProbability, 0.3);
   EXPECT_DOUBLE_EQ(back.motionPrediction, 0.5);
   EXPECT_DOUBLE_EQ(back.maxShapeRms, 3.25);
   EXPECT_EQ(changedTrackerOptions(back), changed);
 }
 
+// Saved settings of earlier versions load: a renamed option by its former name, a retired one
+// (a threshold on one optimiser's own scale, replaced by the one probability) dropped.
+TEST(TrackerOptions, FormerAndRetiredNamesOfSavedSettingsLoad) {
+  const TrackerSettings back = trackerSettingsFrom({{"min-check-probability", "0.7"},
+                                                    {"view-search-probability", "0.8"},
+                                                    {"min-expert-confidence", "0.4"},
+                                                    {"min-confidence", "0.2"},
+                                                    {"view-search-expert", "0.5"}},
+                                                   "old.clm3dproj");
+  EXPECT_DOUBLE_EQ(back.minProbability, 0.7);
+  EXPECT_DOUBLE_EQ(back.viewSearchBelow, 0.8);
+  const std::map<std::string, std::string> changed = changedTrackerOptions(back);
+  EXPECT_EQ(changed.size(), 2u);
+  EXPECT_EQ(changed.at("min-probability"), "0.7");
+  EXPECT_EQ(changed.at("view-search"), "0.8");
+  EXPECT_THROW(trackerSettingsFrom({{"min-confidance", "0.2"}}, "old.clm3dproj"), InputError);
+}
+
 TEST(TrackerOptions, BadValuesNameTheSourceTheOptionAndWhatIsValid) {
-  std::string message = errorOf({{"min-expert-confidence", "1.5"}});
+  std::string message = errorOf({{"min-probability", "1.5"}});
   EXPECT_NE(message.find("project.json"), std::string::npos) << message;
-  EXPECT_NE(message.find("--min-expert-confidence"), std::string::npos) << message;
+  EXPECT_NE(message.find("--min-probability"), std::string::npos) << message;
   EXPECT_NE(message.find("0..1"), std::string::npos) << message;
   message = errorOf({{"scales", "2.5"}});
   EXPECT_NE(message.find("whole number"), std::string::npos) << message;

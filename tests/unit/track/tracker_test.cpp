@@ -108,8 +108,8 @@ TEST(Tracker, ALowConfidenceFrameIsSearchedFromTheNeighbouringView) {
   start.pose.yaw = 0.0;
   const auto trackOnce = [&](double viewSearch) {
     TrackerSettings settings;
-    settings.viewSearchConfidence = viewSearch;
-    settings.minConfidence = 0.0;  // judge the search, not the failure test
+    settings.viewSearchBelow = viewSearch;
+    settings.minProbability = 0.0;  // judge the search, not the failure test
     Tracker tracker(model, scene.camera, settings);
     tracker.setState(start, frontal);
     return tracker.track(scene.image, 0, 0.0);
@@ -119,15 +119,15 @@ TEST(Tracker, ALowConfidenceFrameIsSearchedFromTheNeighbouringView) {
   ASSERT_TRUE(alone.fit && searched.fit);
   EXPECT_EQ(alone.fit->view, frontal);
   EXPECT_EQ(model.views[static_cast<std::size_t>(searched.fit->view)].yawDeg, -30.0);
-  EXPECT_GT(searched.fit->confidence, alone.fit->confidence);
+  EXPECT_GT(searched.fit->probability, alone.fit->probability);
   const double aloneError = frameError(alone.row.points, scene.truthPoints);
   const double searchedError = frameError(searched.row.points, scene.truthPoints);
   EXPECT_LT(searchedError, 0.1) << "frontal alone: " << aloneError;
   EXPECT_LT(searchedError, 0.5 * aloneError);
 }
 
-// With calibrated views and the search asked for, the search from the neighbouring views compares
-// the views' calibrated probabilities: the head at -30 degrees that the track believed frontal is
+// With calibrated views, the search from the neighbouring views (on by default) compares the fits'
+// calibrated probabilities: the head at -30 degrees that the track believed frontal is
 // followed into the -30 view, and a frontal head stays in the frontal view frame after frame.
 TEST(Tracker, WithCalibratedViewsATurnedHeadIsFollowedIntoItsViewAndAFrontalOneStays) {
   const ClmModel& model = test::calibratedFitTestModel().model;
@@ -142,8 +142,7 @@ TEST(Tracker, WithCalibratedViewsATurnedHeadIsFollowedIntoItsViewAndAFrontalOneS
   FitState start = turned.truth;
   start.pose.yaw = 0.0;
   TrackerSettings settings;
-  EXPECT_EQ(settings.viewSearchProbability, 0.0) << "off by default";
-  settings.viewSearchProbability = 0.9;
+  EXPECT_GT(settings.viewSearchBelow, 0.0) << "on by default";
   Tracker follows(model, turned.camera, settings);
   follows.setState(start, frontal);
   const TrackStep step = follows.track(turned.image, 0, 0.0);
@@ -232,25 +231,23 @@ TEST(Tracker, AnOpenedReaderWithAGivenDetectorTracksAsTheFileDoes) {
   }
 }
 
-// rlms tracking judges the experts' confidence on its own scale: the frames of a turning head are
-// tracked; a frame of uniform noise, one of blurred noise and a blank frame, each after a tracked
-// frame, fail (the experts disagree), and the face is found again after each. Measured: the face
-// frames 0.41-0.55, uniform noise 0.23, blurred noise 0.20, the blank frame 0.02 (docs/tracking.md
-// has the wider measurement; noise is the fragile case, see TrackerSettings::minExpertConfidence).
+// rlms tracking judges the experts' response through its curve (core/fit/fit_probability.hpp):
+// the frames of a turning head are tracked; a frame of uniform noise, one of blurred noise and a
+// blank frame, each after a tracked frame, fail (the experts disagree), and the face is found
+// again after each. Measured responses: the face frames 0.41-0.55, uniform noise 0.23, blurred
+// noise 0.20, the blank frame 0.02 (docs/tracking.md has the wider measurement).
 TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
   const ClmModel& model = test::fitTestModel();
   const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
   SequenceRenderer sequence(head.mesh, head.landmarks, Scheme::thesis25(), shortSequence(20.0));
   TrackerSettings settings;
   settings.fit.optimiser = "rlms";
-  settings.minConfidence = 0.9;  // an NCC threshold every rlms frame would fail: it must not apply
   // The fixture's experts (12 renders a view) score faces 0.41-0.55, lower than a photo-trained
-  // model's: the threshold for their scale.
-  settings.minExpertConfidence = 0.35;
+  // model's, and the fixture carries no calibration of them: the threshold is where the built-in
+  // curve puts a response of 0.35.
+  settings.minProbability = builtInScoreCurve(true)(0.35);
   Tracker tracker(model, sequence.camera(), settings);
-  ASSERT_TRUE(tracker.usesExperts());
-  EXPECT_EQ(tracker.minConfidence(), settings.minExpertConfidence);
-  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchExpertConfidence);
+  ASSERT_EQ(tracker.settings().fit.optimiser, "rlms");
 
   // Each non-face frame follows a tracked face frame, so each is searched from a good track.
   const int noiseFrame = 3;
@@ -278,7 +275,7 @@ TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
       frame.bgr.setTo(cv::Scalar::all(128));
     }
     const TrackStep step = tracker.track(frame.bgr, i, i / 30.0);
-    const double confidence = step.fit ? step.fit->confidence : 0.0;
+    const double confidence = step.fit ? step.fit->searchScore : 0.0;
     std::cout << "[ rlms frame " << i << (face ? " face" : " non-face") << ": confidence "
               << confidence << ", " << toString(step.failure) << (step.detected ? ", detected" : "")
               << " ]\n";
@@ -297,20 +294,43 @@ TEST(Tracker, RlmsFailsFramesWithoutAFaceAndTracksTheFace) {
             << highestNonFace << " ]\n";
 }
 
-// The same non-face frame tracked with a template optimiser is judged on the NCC scale.
-TEST(Tracker, TemplateOptimisersKeepTheNccThresholds) {
+// One probability for every optimiser: a model without calibrations (the fixture, renders only)
+// turns each optimiser's score into it by the built-in curves, whose 0.5 is where the tracker
+// failed frames before (a mean NCC of 0.35, a mean expert response of 0.45) and whose 0.9 is
+// where it searched the neighbouring views (NCC 0.7); a fastncc and an rlms fit of the same face
+// both come out probable, and of a noise frame both improbable.
+TEST(Tracker, EveryOptimisersScoreBecomesOneProbability) {
+  const TrackerSettings settings;
+  EXPECT_NEAR(builtInScoreAt(false, settings.minProbability), 0.35, 1e-9);
+  EXPECT_NEAR(builtInScoreAt(true, settings.minProbability), 0.45, 1e-9);
+  EXPECT_NEAR(builtInScoreAt(false, settings.viewSearchBelow), 0.7, 1e-9);
   const ClmModel& model = test::fitTestModel();
-  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
-  TrackerSettings settings;
-  const Tracker tracker(model, scene.camera, settings);
-  EXPECT_FALSE(tracker.usesExperts());
-  EXPECT_EQ(tracker.minConfidence(), settings.minConfidence);
-  EXPECT_EQ(tracker.viewSearchConfidence(), settings.viewSearchConfidence);
+  const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0, test::kHeldOutHead);
+  cv::Mat noise(scene.image.size(), scene.image.type());
+  cv::randu(noise, 0, 255);
+  for (const std::string optimiser : {"fastncc", "rlms"}) {
+    FitSettings fit;
+    fit.optimiser = optimiser;
+    Fitter fitter(model, scene.camera, fit);
+    const bool experts = optimiser == "rlms";
+    const FitResult face = fitter.fit(scene.image, scene.truth);
+    const FitResult none = fitter.fit(noise, scene.truth);
+    EXPECT_EQ(face.probabilitySource,
+              experts ? ProbabilitySource::BuiltInExpertCurve : ProbabilitySource::BuiltInNccCurve)
+        << optimiser;
+    EXPECT_DOUBLE_EQ(face.probability, builtInScoreCurve(experts)(face.searchScore)) << optimiser;
+    EXPECT_GT(face.probability, none.probability + 0.3) << optimiser;
+    EXPECT_LT(none.probability, settings.minProbability) << optimiser;
+    EXPECT_GE(face.probability, 0.0);
+    EXPECT_LE(face.probability, 1.0);
+    std::cout << "[ " << optimiser << ": face " << face.searchScore << " -> " << face.probability
+              << ", noise " << none.searchScore << " -> " << none.probability << " ]\n";
+  }
 }
 
 // The default optimiser, "auto", is resolved for the model: a model trained with photos (experts
-// and a checked point refiner) is tracked with rlms on the experts' thresholds, others with
-// fastncc.
+// and a checked point refiner) is tracked with rlms, others with fastncc; the studio marks each
+// landmark's score below the point of its optimiser's curve where the threshold lies.
 TEST(Tracker, TheAutoOptimiserIsResolvedForTheModel) {
   ClmModel checked = test::fitTestModel();
   test::giveCheckedRefiner(checked);
@@ -318,11 +338,10 @@ TEST(Tracker, TheAutoOptimiserIsResolvedForTheModel) {
   const TrackerSettings settings;
   const Tracker tracker(checked, scene.camera, settings);
   EXPECT_EQ(tracker.settings().fit.optimiser, "rlms");
-  EXPECT_TRUE(tracker.usesExperts());
-  EXPECT_EQ(confidenceThreshold(settings, checked), settings.minExpertConfidence);
+  EXPECT_NEAR(landmarkScoreThreshold(settings, checked), 0.45, 1e-9);
   const Tracker plain(test::fitTestModel(), scene.camera, settings);
   EXPECT_EQ(plain.settings().fit.optimiser, "fastncc");
-  EXPECT_EQ(confidenceThreshold(settings, test::fitTestModel()), settings.minConfidence);
+  EXPECT_NEAR(landmarkScoreThreshold(settings, test::fitTestModel()), 0.35, 1e-9);
 }
 
 // Each tracked row says per landmark whether it is visible from the fitted pose: the nearest
@@ -380,7 +399,8 @@ TEST(Tracker, RowsCarryTheVisibilityOfTheFittedPose) {
 // Smoothing changes only the written points: the same frames succeed, fail and are re-detected
 // with it on and off; a failed frame and the first frame after it keep their fitted points; the
 // rest move less from frame to frame than the truth explains (jitter, core/eval) than unsmoothed.
-// Each row carries the fit's per-landmark confidence, whose mean is the frame's confidence.
+// Each row carries the fit's per-landmark score, whose mean is the search's score, and the fit's
+// probability as its confidence.
 TEST(Tracker, SmoothingLowersJitterAndNeverHidesAFailure) {
   const ClmModel& model = test::fitTestModel();
   const SynthHead& head = test::fitTestHead(test::kHeldOutHead);
@@ -425,7 +445,8 @@ TEST(Tracker, SmoothingLowersJitterAndNeverHidesAFailure) {
           ++modelled;
         }
       }
-      EXPECT_NEAR(sum / modelled, a.row.confidence, 1e-9);
+      EXPECT_NEAR(sum / modelled, a.fit->searchScore, 1e-9);
+      EXPECT_EQ(a.row.confidence, a.fit->probability);
     }
     restarted = !b.row.success;
     if (i == kBlank) {

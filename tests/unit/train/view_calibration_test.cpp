@@ -74,8 +74,10 @@ TEST(ViewCalibration, ARightFitInItsViewIsMoreProbableThanOneAViewAway) {
   const double stayedError = meanError(stayed.points, scene.truthPoints) / scene.interOcular;
   ASSERT_LT(rightError, 0.08);
   ASSERT_GT(stayedError, 1.5 * rightError);
-  EXPECT_GT(right.viewProbability, stayed.viewProbability + 0.02)
-      << "responses " << right.confidence << " / " << stayed.confidence;
+  ASSERT_EQ(right.probabilitySource, ProbabilitySource::ViewCalibration);
+  ASSERT_EQ(stayed.probabilitySource, ProbabilitySource::ViewCalibration);
+  EXPECT_GT(right.probability, stayed.probability + 0.02)
+      << "responses " << right.searchScore << " / " << stayed.searchScore;
   const FitResult searched = searchNeighbouringViews(fitter, model, scene.image, stayed, 0.02);
   EXPECT_EQ(searched.view, side);
   EXPECT_LT(meanError(searched.points, scene.truthPoints) / scene.interOcular, 0.08);
