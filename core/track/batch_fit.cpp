@@ -201,7 +201,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       reason << std::fixed << std::setprecision(2)
              << "the model rejects the fit: its probability of being right (" << fit.probability
              << ", by the " << toString(fit.probabilitySource) << ") is below "
-             << settings_.minProbability << "): the points are probably not on a face";
+             << settings_.minProbability << ": the points are probably not on a face";
       outcome.message = fileMessage(image, reason.str());
     }
     if (!output.empty() && (!rejected || settings_.keepRejected)) {
