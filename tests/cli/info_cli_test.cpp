@@ -32,6 +32,24 @@ TEST(InfoCli, SummarisesAModel) {
   }
 }
 
+// It says where a fit's probability of being right comes from (docs/fitting.md#one-confidence):
+// the built-in curves for a model without calibrations, the views' curves for rlms once they have
+// them.
+TEST(InfoCli, SaysWhereAFitsProbabilityComesFrom) {
+  test::TempDir dir;
+  ClmModel model = test::makeTinyModel(42);
+  saveModel(model, dir / "plain.clm3d");
+  const auto plain = runClm3d("info " + (dir / "plain.clm3d").string());
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  EXPECT_TRUE(test::contains(plain.output, "fit probability: the built-in curves")) << plain.output;
+  model.views[1].calibration = LogisticCurve{12.0, -6.0};  // the frontal view: no mirror image
+  saveModel(model, dir / "calibrated.clm3d");
+  const auto calibrated = runClm3d("info " + (dir / "calibrated.clm3d").string());
+  ASSERT_EQ(calibrated.exitCode, 0) << calibrated.output;
+  EXPECT_TRUE(test::contains(calibrated.output, "rlms: the views' calibration"))
+      << calibrated.output;
+}
+
 TEST(InfoCli, TruncatedModelFailsNamingTheFile) {
   test::TempDir dir;
   const auto path = dir / "cut.clm3d";
