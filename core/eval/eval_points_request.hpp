@@ -29,8 +29,7 @@ struct EvalPointsRequest {
   bool roc = false;
   bool sameFaces = false;
   double wrongAbove = 0.15;
-  // For --roc: the threshold whose counts are printed (the point check's default,
-  // --min-check-probability).
+  // For --roc: the threshold whose counts are printed (the default --min-probability).
   double acceptAt = FaceSearchSettings{}.minProbability;
   double offFaceAbove = 0.08;
   std::filesystem::path poses, model;

@@ -6,9 +6,9 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/scheme/csv_format.hpp"
-#include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/ljson_format.hpp"
 #include "core/scheme/pts_format.hpp"
+#include "core/scheme/scheme_map.hpp"
 
 namespace clm3d {
 const Scheme* builtInSchemeOfSize(int count) {
@@ -63,9 +63,7 @@ LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expec
     }
   }
   if (expected == nullptr || points.size() == expected->size()) return points;
-  if (expected->name() == "thesis25" && points.size() == Scheme::ibug68().size()) {
-    return ibug68ToThesis25(points);
-  }
+  if (const SchemeMap* map = schemeMapFor(points.size(), *expected)) return map->apply(points);
   throwInputError(path, "has " + std::to_string(points.size()) + " points, scheme " +
                             expected->name() + " expects " + std::to_string(expected->size()));
 }

@@ -23,8 +23,9 @@ LandmarkFormat landmarkFormatOf(const std::filesystem::path& path);
 
 // Reads a landmark file. With `expected`, the points come back in its order (LJSON layouts and CSV
 // ids are applied) and must number expected->size(), else InputError "FILE: has 68 points, scheme
-// thesis25 expects 25" - except that a 68-point file read for a scheme named thesis25 is converted
-// with ibug68ToThesis25 (some thesis points are then missing, see docs/landmarks.md).
+// thesis25 expects 25" - except that a file in a scheme with a built-in map to `expected`
+// (schemeMapFor: iBUG's 68 points, AFLW's 21, read for thesis25) is converted by the map; the
+// points without a counterpart, and AFLW's invisible ones, are then missing (docs/landmarks.md).
 // Without `expected`, LJSON layouts of the built-in scheme of the same size apply, and CSV rows are
 // placed in the built-in scheme holding all their ids (else kept in file order).
 LandmarkSet readLandmarks(const std::filesystem::path& path, const Scheme* expected = nullptr);

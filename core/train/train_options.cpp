@@ -113,7 +113,7 @@ std::vector<TrainOption> buildOptions() {
   o.push_back(flagOption<S>(
       spec("calibrate-views", "Calibrate the views", experts,
            "with photos: calibrate each view's search confidence into the probability that a fit "
-           "is right, on photos the experts did not learn from (for --view-search-probability)"),
+           "is right, on photos the experts did not learn from (for --view-search)"),
       [](S& s) -> bool& { return s.calibrateViews; }));
 
   const std::string pca = "Variance kept";

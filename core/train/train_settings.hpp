@@ -68,7 +68,7 @@ struct TrainSettings {
   int refinerStages = 5;
   int refinerStarts = 20;
   // Calibrate each view's search confidence on held-out photos (core/train/view_calibration.hpp;
-  // ViewModel::calibration), for `--view-search-probability`. Off by default, as that search is:
+  // ViewModel::calibration), for `--view-search`. Off by default, as that search is:
   // it made fits on turned LFPW photos worse (docs/fitting.md#views-on-one-scale). Cheap: 8 s
   // more of a 207 s training from the real-faces dataset.
   bool calibrateViews = false;

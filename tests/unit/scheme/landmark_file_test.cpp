@@ -6,6 +6,7 @@
 
 #include "core/common/error.hpp"
 #include "core/scheme/ibug68_conversion.hpp"
+#include "core/scheme/scheme_map.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace clm3d {
@@ -71,6 +72,27 @@ TEST(LandmarkFile, SixtyEightPointsReadAsThesis25AreConverted) {
   const auto expected = ibug68ToThesis25(ibug);
   EXPECT_EQ(thesis.presentMask(), expected.presentMask());
   EXPECT_TRUE(thesis.point(1).isApprox(expected.point(1), 1e-12));
+}
+
+// AFLW's 21 points (as ../shared/data writes them, "-1 -1" for a point hidden by the turn) read
+// for thesis25 through the built-in map: a start for `clm3d fit --init-dir` from that mark-up.
+TEST(LandmarkFile, AflwTwentyOnePointsReadAsThesis25AreMapped) {
+  test::TempDir dir;
+  const auto path = dir / "aflw.pts";
+  std::string text = "version: 1\nn_points: 21\n{\n";
+  for (int a = 0; a < 21; ++a) {
+    text += a == 12 ? "-1 -1\n"  // AFLW 13, the image-left ear lobe, hidden
+                    : std::to_string(10 + a) + " " + std::to_string(100 + 2 * a) + "\n";
+  }
+  test::writeFile(path, text + "}\n");
+  const auto thesis = readLandmarks(path, &Scheme::thesis25());
+  ASSERT_EQ(thesis.size(), 25);
+  const auto expected = aflw21ToThesis25Map().apply(readLandmarks(path));
+  EXPECT_EQ(thesis.presentMask(), expected.presentMask());
+  EXPECT_EQ(thesis.presentCount(), 18);  // 18 pairs and point 1, less the hidden lobe
+  const int nose = Scheme::thesis25().indexOf("nose_tip");
+  ASSERT_TRUE(thesis.has(nose));
+  EXPECT_TRUE(thesis.point(nose).isApprox(expected.point(nose), 1e-12));
 }
 
 TEST(LandmarkFile, ErrorsNameTheFile) {
