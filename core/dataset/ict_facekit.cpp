@@ -16,7 +16,7 @@
 #include "core/common/error.hpp"
 #include "core/common/json_fields.hpp"
 #include "core/common/split_mix_random.hpp"
-#include "core/dataset/obj_vertex_picker.hpp"
+#include "core/dataset/detail/obj_vertex_picker.hpp"
 
 namespace clm3d {
 namespace fs = std::filesystem;

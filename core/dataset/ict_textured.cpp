@@ -11,7 +11,7 @@
 #include <tuple>
 
 #include "core/common/error.hpp"
-#include "core/dataset/model_frame.hpp"
+#include "core/dataset/detail/model_frame.hpp"
 #include "core/registration/texture_bake.hpp"
 #include "core/scheme/scheme.hpp"
 

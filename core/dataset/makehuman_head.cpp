@@ -1,4 +1,4 @@
-#include "core/dataset/makehuman_head.hpp"
+#include "core/dataset/detail/makehuman_head.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
 #include "core/common/split_mix_random.hpp"
-#include "core/dataset/makehuman_target.hpp"
+#include "core/dataset/detail/makehuman_target.hpp"
 
 namespace clm3d {
 namespace fs = std::filesystem;

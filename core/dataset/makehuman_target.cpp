@@ -1,4 +1,4 @@
-#include "core/dataset/makehuman_target.hpp"
+#include "core/dataset/detail/makehuman_target.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include "core/common/error.hpp"
 #include "core/common/json_fields.hpp"
 #include "core/dataset/axis_name.hpp"
-#include "core/dataset/seed_list.hpp"
+#include "core/dataset/detail/seed_list.hpp"
 #include "core/scheme/scheme.hpp"
 #include "core/synth/head_identity.hpp"
 #include "core/synth/synth_head.hpp"

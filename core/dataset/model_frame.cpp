@@ -1,4 +1,4 @@
-#include "core/dataset/model_frame.hpp"
+#include "core/dataset/detail/model_frame.hpp"
 
 #include "core/common/error.hpp"
 #include "core/mesh/mesh_transform.hpp"

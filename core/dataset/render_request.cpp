@@ -7,7 +7,7 @@
 
 #include "core/common/error.hpp"
 #include "core/dataset/axis_name.hpp"
-#include "core/dataset/model_frame.hpp"
+#include "core/dataset/detail/model_frame.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/mesh/mesh_transform.hpp"
 #include "core/render/framing.hpp"

@@ -1,4 +1,4 @@
-#include "core/dataset/seed_list.hpp"
+#include "core/dataset/detail/seed_list.hpp"
 
 #include <charconv>
 #include <set>

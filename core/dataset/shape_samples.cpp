@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include "core/common/error.hpp"
+#include "core/dataset/detail/model_frame.hpp"
 #include "core/dataset/ict_facekit.hpp"
-#include "core/dataset/model_frame.hpp"
 #include "core/dataset/training_subjects.hpp"
 #include "core/scheme/scheme.hpp"
 

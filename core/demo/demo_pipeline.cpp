@@ -1,11 +1,11 @@
-#include "core/demo/demo_pipeline.hpp"
+#include "core/demo/detail/demo_pipeline.hpp"
 
 #include <iomanip>
 #include <sstream>
 
 #include "core/common/job_progress.hpp"
 #include "core/common/parallel_for.hpp"
-#include "core/demo/procedural_heads.hpp"
+#include "core/demo/detail/procedural_heads.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/render/projected_landmarks.hpp"

@@ -8,7 +8,7 @@
 #include "core/common/data_paths.hpp"
 #include "core/common/error.hpp"
 #include "core/dataset/manifest_writer.hpp"
-#include "core/demo/demo_pipeline.hpp"
+#include "core/demo/detail/demo_pipeline.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/model/model_file.hpp"

@@ -1,4 +1,4 @@
-#include "core/demo/procedural_heads.hpp"
+#include "core/demo/detail/procedural_heads.hpp"
 
 #include <cmath>
 

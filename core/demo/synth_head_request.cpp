@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/demo/procedural_heads.hpp"
+#include "core/demo/detail/procedural_heads.hpp"
 #include "core/viz/contact_sheet.hpp"
 #include "core/viz/image_file.hpp"
 

@@ -1,4 +1,4 @@
-#include "core/detect/dlib_hog.hpp"
+#include "core/detect/detail/dlib_hog.hpp"
 
 #include "core/common/error.hpp"
 

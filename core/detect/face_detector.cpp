@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
-#include "core/detect/dlib_hog.hpp"
+#include "core/detect/detail/dlib_hog.hpp"
 
 namespace clm3d {
 

@@ -1,4 +1,4 @@
-#include "core/eval/band_table.hpp"
+#include "core/eval/detail/band_table.hpp"
 
 #include <cmath>
 #include <sstream>

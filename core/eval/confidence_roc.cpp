@@ -1,4 +1,4 @@
-#include "core/eval/confidence_roc.hpp"
+#include "core/eval/detail/confidence_roc.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
-#include "core/eval/correction_benchmark.hpp"
+#include "core/eval/detail/correction_benchmark.hpp"
 #include "core/model/model_file.hpp"
 #include "core/track/review_list.hpp"
 #include "core/track/tracker_options.hpp"

@@ -1,4 +1,4 @@
-#include "core/eval/correction_benchmark.hpp"
+#include "core/eval/detail/correction_benchmark.hpp"
 
 #include <algorithm>
 #include <chrono>

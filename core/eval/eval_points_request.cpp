@@ -5,7 +5,7 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
-#include "core/eval/confidence_roc.hpp"
+#include "core/eval/detail/confidence_roc.hpp"
 #include "core/eval/landmark_error.hpp"
 #include "core/eval/point_folder_error.hpp"
 #include "core/eval/point_set_error.hpp"

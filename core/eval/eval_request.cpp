@@ -5,9 +5,9 @@
 
 #include "core/common/atomic_file.hpp"
 #include "core/common/error.hpp"
+#include "core/eval/detail/sequence_yaw_bands.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
-#include "core/eval/sequence_yaw_bands.hpp"
 #include "core/eval/yaw_bands.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/model/model_file.hpp"

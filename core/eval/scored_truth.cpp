@@ -1,4 +1,4 @@
-#include "core/eval/scored_truth.hpp"
+#include "core/eval/detail/scored_truth.hpp"
 
 #include <limits>
 #include <string>

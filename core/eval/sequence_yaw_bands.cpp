@@ -1,4 +1,4 @@
-#include "core/eval/sequence_yaw_bands.hpp"
+#include "core/eval/detail/sequence_yaw_bands.hpp"
 
 #include <cmath>
 #include <map>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/common/error.hpp"
-#include "core/eval/band_table.hpp"
+#include "core/eval/detail/band_table.hpp"
 #include "core/eval/yaw_bands.hpp"
 #include "core/track/track_table.hpp"
 

@@ -10,7 +10,7 @@
 #include "core/common/error.hpp"
 #include "core/common/number_text.hpp"
 #include "core/detect/initialisation.hpp"
-#include "core/eval/band_table.hpp"
+#include "core/eval/detail/band_table.hpp"
 #include "core/eval/error_buckets.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/eval/statistics.hpp"

@@ -31,7 +31,7 @@
 #include <random>
 
 #include "core/common/error.hpp"
-#include "core/fit/optimiser_factories.hpp"
+#include "core/fit/detail/optimiser_factories.hpp"
 
 namespace clm3d {
 namespace {

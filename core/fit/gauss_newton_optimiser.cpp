@@ -30,9 +30,9 @@
 #include <memory>
 #include <string_view>
 
-#include "core/fit/inverse_alignment.hpp"
+#include "core/fit/detail/inverse_alignment.hpp"
+#include "core/fit/detail/optimiser_factories.hpp"
 #include "core/fit/optimiser.hpp"
-#include "core/fit/optimiser_factories.hpp"
 
 namespace clm3d {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/fit/inverse_alignment.hpp"
+#include "core/fit/detail/inverse_alignment.hpp"
 
 #include <algorithm>
 #include <cmath>

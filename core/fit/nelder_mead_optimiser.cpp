@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "core/common/error.hpp"
-#include "core/fit/optimiser_factories.hpp"
-#include "core/fit/simplex.hpp"
-#include "core/fit/unit_step_objective.hpp"
+#include "core/fit/detail/optimiser_factories.hpp"
+#include "core/fit/detail/simplex.hpp"
+#include "core/fit/detail/unit_step_objective.hpp"
 
 namespace clm3d {
 namespace {

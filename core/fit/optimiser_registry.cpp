@@ -2,8 +2,8 @@
 #include <utility>
 
 #include "core/common/error.hpp"
+#include "core/fit/detail/optimiser_factories.hpp"
 #include "core/fit/optimiser.hpp"
-#include "core/fit/optimiser_factories.hpp"
 #include "core/model/clm_model.hpp"
 
 namespace clm3d {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/common/error.hpp"
-#include "core/fit/window_dots.hpp"
+#include "core/fit/detail/window_dots.hpp"
 #include "core/image/patch_sampling.hpp"
 
 namespace clm3d {

@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/fit/detail/optimiser_factories.hpp"
 #include "core/fit/optimiser.hpp"
-#include "core/fit/optimiser_factories.hpp"
 #include "core/fit/response_map.hpp"
 
 namespace clm3d {

@@ -1,4 +1,4 @@
-#include "core/fit/window_dots.hpp"
+#include "core/fit/detail/window_dots.hpp"
 
 #include <algorithm>
 #include <cstring>

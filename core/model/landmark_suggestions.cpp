@@ -1,7 +1,7 @@
 #include "core/model/landmark_suggestions.hpp"
 
 #include "core/geometry/symmetry_plane.hpp"
-#include "core/model/shape_guess.hpp"
+#include "core/model/detail/shape_guess.hpp"
 
 namespace clm3d {
 

@@ -1,4 +1,4 @@
-#include "core/model/shape_guess.hpp"
+#include "core/model/detail/shape_guess.hpp"
 
 #include <Eigen/Dense>
 #include <string>

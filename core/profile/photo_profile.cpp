@@ -1,4 +1,4 @@
-#include "core/profile/photo_profile.hpp"
+#include "core/profile/detail/photo_profile.hpp"
 
 #include <Eigen/SVD>
 #include <algorithm>

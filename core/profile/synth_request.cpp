@@ -13,7 +13,7 @@
 #include "core/dataset/ict_textured.hpp"
 #include "core/dataset/training_subjects.hpp"
 #include "core/eval/photo_pair_sequence.hpp"
-#include "core/profile/turned_photo_sequence.hpp"
+#include "core/profile/detail/turned_photo_sequence.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/viz/image_file.hpp"
 

@@ -1,4 +1,4 @@
-#include "core/profile/turned_photo_sequence.hpp"
+#include "core/profile/detail/turned_photo_sequence.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,8 +9,8 @@
 #include "core/common/logistic_curve.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/geometry/similarity2.hpp"
-#include "core/refine/descent_features.hpp"
-#include "core/refine/ridge_regression.hpp"
+#include "core/refine/detail/descent_features.hpp"
+#include "core/refine/detail/ridge_regression.hpp"
 
 namespace clm3d {
 

@@ -1,4 +1,4 @@
-#include "core/refine/descent_features.hpp"
+#include "core/refine/detail/descent_features.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 #include "core/common/error.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/refine/descent_check.hpp"
-#include "core/refine/descent_features.hpp"
-#include "core/refine/ridge_regression.hpp"
+#include "core/refine/detail/descent_features.hpp"
+#include "core/refine/detail/ridge_regression.hpp"
 
 namespace clm3d {
 

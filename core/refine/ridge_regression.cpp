@@ -1,4 +1,4 @@
-#include "core/refine/ridge_regression.hpp"
+#include "core/refine/detail/ridge_regression.hpp"
 
 #include <Eigen/Dense>
 

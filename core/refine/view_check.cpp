@@ -11,8 +11,8 @@
 #include "core/geometry/projection.hpp"
 #include "core/geometry/similarity2.hpp"
 #include "core/refine/descent_check.hpp"
-#include "core/refine/descent_features.hpp"
 #include "core/refine/descent_refinement.hpp"
+#include "core/refine/detail/descent_features.hpp"
 
 namespace clm3d {
 

@@ -10,7 +10,7 @@
 
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
-#include "core/render/render_module.hpp"
+#include "core/render/detail/render_module.hpp"
 
 namespace clm3d {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/render/render_module.hpp"
+#include "core/render/detail/render_module.hpp"
 
 #include <dlfcn.h>
 

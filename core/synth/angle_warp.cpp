@@ -1,10 +1,10 @@
-#include "core/synth/angle_warp.hpp"
+#include "core/synth/detail/angle_warp.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "core/synth/synth_math.hpp"
+#include "core/synth/detail/synth_math.hpp"
 
 namespace clm3d::synth {
 

@@ -1,4 +1,4 @@
-#include "core/synth/head_shape.hpp"
+#include "core/synth/detail/head_shape.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "core/common/error.hpp"
-#include "core/synth/synth_math.hpp"
+#include "core/synth/detail/synth_math.hpp"
 
 namespace clm3d::synth {
 namespace {

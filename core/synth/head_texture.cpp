@@ -1,4 +1,4 @@
-#include "core/synth/head_texture.hpp"
+#include "core/synth/detail/head_texture.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/common/parallel_for.hpp"
-#include "core/synth/synth_math.hpp"
-#include "core/synth/value_noise.hpp"
+#include "core/synth/detail/synth_math.hpp"
+#include "core/synth/detail/value_noise.hpp"
 
 namespace clm3d::synth {
 namespace {

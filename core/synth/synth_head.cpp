@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "core/common/error.hpp"
-#include "core/synth/angle_warp.hpp"
-#include "core/synth/head_shape.hpp"
-#include "core/synth/head_texture.hpp"
+#include "core/synth/detail/angle_warp.hpp"
+#include "core/synth/detail/head_shape.hpp"
+#include "core/synth/detail/head_texture.hpp"
 
 namespace clm3d {
 namespace {

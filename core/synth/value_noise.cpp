@@ -1,4 +1,4 @@
-#include "core/synth/value_noise.hpp"
+#include "core/synth/detail/value_noise.hpp"
 
 #include <cmath>
 

@@ -10,7 +10,7 @@
 #include "core/common/image_list.hpp"
 #include "core/model/model_file.hpp"
 #include "core/track/batch_run.hpp"
-#include "core/track/slurm_array.hpp"
+#include "core/track/detail/slurm_array.hpp"
 
 namespace clm3d {
 namespace batch_request_detail {

@@ -1,4 +1,4 @@
-#include "core/track/slurm_array.hpp"
+#include "core/track/detail/slurm_array.hpp"
 
 #include <sys/wait.h>
 

@@ -10,7 +10,7 @@
 
 #include "core/common/error.hpp"
 #include "core/common/split_mix_random.hpp"
-#include "core/train/clutter_background.hpp"
+#include "core/train/detail/clutter_background.hpp"
 
 namespace clm3d {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/train/cast_shadow.hpp"
+#include "core/train/detail/cast_shadow.hpp"
 
 #include <algorithm>
 #include <cmath>

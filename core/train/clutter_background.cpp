@@ -1,4 +1,4 @@
-#include "core/train/clutter_background.hpp"
+#include "core/train/detail/clutter_background.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/train/expert_training.hpp"
+#include "core/train/detail/expert_training.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>

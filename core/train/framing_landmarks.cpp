@@ -1,4 +1,4 @@
-#include "core/train/framing_landmarks.hpp"
+#include "core/train/detail/framing_landmarks.hpp"
 
 #include <string>
 

@@ -11,7 +11,7 @@
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/refine/descent_refinement.hpp"
-#include "core/train/expert_training.hpp"
+#include "core/train/detail/expert_training.hpp"
 #include "core/train/photo_samples.hpp"
 #include "core/train/train_settings.hpp"
 #include "core/train/trainer.hpp"

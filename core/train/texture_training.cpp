@@ -11,8 +11,8 @@
 #include "core/common/parallel_for.hpp"
 #include "core/common/split_mix_random.hpp"
 #include "core/render/offscreen_renderer.hpp"
-#include "core/train/expert_training.hpp"
-#include "core/train/framing_landmarks.hpp"
+#include "core/train/detail/expert_training.hpp"
+#include "core/train/detail/framing_landmarks.hpp"
 #include "core/train/training_sample.hpp"
 
 namespace clm3d {

@@ -12,7 +12,7 @@
 #include "core/image/patch_sampling.hpp"
 #include "core/image/pyramid.hpp"
 #include "core/model/texture_model.hpp"
-#include "core/train/cast_shadow.hpp"
+#include "core/train/detail/cast_shadow.hpp"
 
 namespace clm3d {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/render/render_module_abi.h"
+#include "core/render/detail/render_module_abi.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // MakeHuman identities from ../shared/data/makehuman (skipped when it is absent): loading, seeds,
 // the landmark table on the generated meshes, symmetry, size, and the manifest entry.
-#include "core/dataset/makehuman_head.hpp"
+#include "core/dataset/detail/makehuman_head.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The MakeHuman .target reader and target application, on tiny files written at run time (always
 // runs): parsing with comments and MakeHuman's number style, the sum on a mesh, and errors that
 // name the file and the line.
-#include "core/dataset/makehuman_target.hpp"
+#include "core/dataset/detail/makehuman_target.hpp"
 
 #include <gtest/gtest.h>
 

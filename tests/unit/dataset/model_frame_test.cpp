@@ -2,7 +2,7 @@
 // the landmarks allow it (levelled on the eye centres, or on the eye corners when the centres are
 // missing; landmark 1 at the origin), and never failing for want of landmarks: the file's axes
 // and the given origin instead.
-#include "core/dataset/model_frame.hpp"
+#include "core/dataset/detail/model_frame.hpp"
 
 #include <gtest/gtest.h>
 

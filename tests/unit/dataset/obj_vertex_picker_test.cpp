@@ -1,4 +1,4 @@
-#include "core/dataset/obj_vertex_picker.hpp"
+#include "core/dataset/detail/obj_vertex_picker.hpp"
 
 #include <gtest/gtest.h>
 

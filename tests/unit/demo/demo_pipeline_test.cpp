@@ -3,7 +3,7 @@
 // landmarks (the same whatever the thread count, files named by head and view), the contact sheet
 // and the hidden-landmark table. Training, the test sequence and tracking run end to end in
 // tests/cli/demo_cli_test.cpp. Also core/render/projected_landmarks on one of the renders.
-#include "core/demo/demo_pipeline.hpp"
+#include "core/demo/detail/demo_pipeline.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/demo/procedural_heads.hpp"
+#include "core/demo/detail/procedural_heads.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/render/projected_landmarks.hpp"
 #include "core/scheme/landmark_file.hpp"

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "core/common/error.hpp"
+#include "core/eval/detail/scored_truth.hpp"
 #include "core/eval/point_folder_error.hpp"
-#include "core/eval/scored_truth.hpp"
 #include "core/eval/yaw_bands.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "tests/support/test_files.hpp"

@@ -1,7 +1,7 @@
 // The confidence ROC: a confidence that ranks every right fit above every wrong one has AUC 1, a
 // reversed one 0, ties count half; the operating point that keeps a share of the right fits; and
 // fits whose error or confidence is not finite are left out.
-#include "core/eval/confidence_roc.hpp"
+#include "core/eval/detail/confidence_roc.hpp"
 
 #include <gtest/gtest.h>
 

@@ -13,8 +13,8 @@
 #include <random>
 #include <string>
 
+#include "core/fit/detail/inverse_alignment.hpp"
 #include "core/fit/fitter.hpp"
-#include "core/fit/inverse_alignment.hpp"
 #include "core/fit/optimiser.hpp"
 #include "tests/unit/fit/inverse_step_check.hpp"
 #include "tests/unit/fit/recovery_check.hpp"

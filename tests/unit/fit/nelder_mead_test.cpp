@@ -9,8 +9,8 @@
 #include <numbers>
 
 #include "core/common/error.hpp"
+#include "core/fit/detail/simplex.hpp"
 #include "core/fit/optimiser.hpp"
-#include "core/fit/simplex.hpp"
 #include "tests/unit/fit/optimiser_fit_check.hpp"
 
 namespace clm3d {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/fit/direction_set.hpp"
+#include "core/fit/detail/direction_set.hpp"
 #include "core/fit/optimiser.hpp"
 #include "tests/unit/fit/optimiser_fit_check.hpp"
 

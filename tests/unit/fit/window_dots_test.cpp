@@ -2,7 +2,7 @@
 // moments of every window equal sums taken one window at a time, for patch sizes that do and do
 // not fill the vectorised kernel's lanes, several filters, and regions whose window count is not
 // a multiple of the kernel's group of windows.
-#include "core/fit/window_dots.hpp"
+#include "core/fit/detail/window_dots.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // guessShape: a posed, deformed model shape is recovered from a few placed points; fewer than 3
 // points give the frontal guess in the bounds.
-#include "core/model/shape_guess.hpp"
+#include "core/model/detail/shape_guess.hpp"
 
 #include <gtest/gtest.h>
 

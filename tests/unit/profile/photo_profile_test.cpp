@@ -2,7 +2,7 @@
 // projected points with a dense face of the head's own mesh plus a width mode, turned, and the
 // profiled points compared with the renderer's projection of the true head turned; the profiled
 // render's face compared with the true render; the turned sequence's files; the region fill.
-#include "core/profile/photo_profile.hpp"
+#include "core/profile/detail/photo_profile.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
 #include "core/profile/dense_face.hpp"
-#include "core/profile/turned_photo_sequence.hpp"
+#include "core/profile/detail/turned_photo_sequence.hpp"
 #include "core/render/offscreen_renderer.hpp"
 #include "core/synth/synth_head.hpp"
 #include "core/track/track_table.hpp"

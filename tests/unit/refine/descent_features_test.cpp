@@ -3,7 +3,7 @@
 // the features agree with the warpAffine and atan2 computation they replaced (the refiner of a
 // model trained before was learnt on those), inside the image and where the windows reach past
 // its border.
-#include "core/refine/descent_features.hpp"
+#include "core/refine/detail/descent_features.hpp"
 
 #include <gtest/gtest.h>
 

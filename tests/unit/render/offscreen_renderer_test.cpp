@@ -13,7 +13,7 @@
 
 #include "core/common/error.hpp"
 #include "core/geometry/projection.hpp"
-#include "core/render/render_module.hpp"
+#include "core/render/detail/render_module.hpp"
 #include "tests/support/test_support.hpp"
 #include "tests/unit/render/render_test_meshes.hpp"
 

@@ -2,7 +2,7 @@
 // the centre (random texture, brightness and contrast per region) the expert's response map peaks
 // at the centre, is above one half there and below it three or more pixels away; training is
 // deterministic; bad input is refused.
-#include "core/train/expert_training.hpp"
+#include "core/train/detail/expert_training.hpp"
 
 #include <gtest/gtest.h>
 

@@ -14,7 +14,7 @@
 #include "core/common/progress.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/profile/dense_face.hpp"
-#include "core/profile/photo_profile.hpp"
+#include "core/profile/detail/photo_profile.hpp"
 #include "core/scheme/landmark_set.hpp"
 #include "core/track/track_table.hpp"
 

@@ -8,8 +8,8 @@
 
 #include <opencv2/core/mat.hpp>
 
-#include "core/synth/angle_warp.hpp"
-#include "core/synth/head_shape.hpp"
+#include "core/synth/detail/angle_warp.hpp"
+#include "core/synth/detail/head_shape.hpp"
 
 namespace clm3d::synth {
 

@@ -18,7 +18,7 @@
 
 #include "core/common/progress.hpp"
 #include "core/dataset/manifest.hpp"
-#include "core/demo/procedural_heads.hpp"
+#include "core/demo/detail/procedural_heads.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/model/clm_model.hpp"
 #include "core/synth/synth_head.hpp"
