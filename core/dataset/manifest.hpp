@@ -42,7 +42,7 @@ struct IctSource {
   std::uint64_t seedOffset = 0;          // added to the sampling seed
 };
 
-// Random MakeHuman identities (core/dataset/makehuman_head.hpp): each identity (seed
+// Random MakeHuman identities (core/dataset/detail/makehuman_head.hpp): each identity (seed
 // seedOffset + i) with each expression is one textured subject.
 struct MakeHumanSource {
   std::filesystem::path root;      // the MakeHuman data folder (base/, skins/, eyes/, targets/)

@@ -1,8 +1,8 @@
 // What `clm3d correction-bench` is asked for, described once as an option table (the files, the
 // simulated annotator's rules, the review list's own table, `clm3d adapt`'s adaptation options and
 // `clm3d track`'s tracker options), and its run: issue 29's correction benchmark
-// (core/eval/correction_benchmark.hpp) over one or more sequences, its tables as the command's
-// output and, when asked, its CSV.
+// (core/eval/detail/correction_benchmark.hpp) over one or more sequences, its tables as the
+// command's output and, when asked, its CSV.
 #pragma once
 
 #include <filesystem>

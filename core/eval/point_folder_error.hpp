@@ -83,15 +83,15 @@ struct PointFolderReport {
   double offFaceAbove = 0.08;
 };
 
-// Truths are the folder's *.pts files, read with readScoredTruth (core/eval/scored_truth.hpp: for
-// thesis25 a 68-point file is converted and AFLW's 21 points are paired; a point written "-1 -1",
-// AFLW's mark of an invisible point, is missing, in the truths and in .pts predictions; the face
-// box is that of the file's own points); predictions are STEM.pts, STEM.ljson or STEM.csv in each
-// prediction folder (the first that exists). A truth without its normalisation pair (a profile
-// whose far eye is not marked) is scored by the face box only. labels: empty or one per folder.
-// Throws InputError naming the folder or file: a folder missing or without a .pts truth, a truth
-// the scheme cannot be paired with, an unreadable prediction or one with the wrong point count, a
-// label count that does not match.
+// Truths are the folder's *.pts files, read with readScoredTruth
+// (core/eval/detail/scored_truth.hpp: for thesis25 a 68-point file is converted and AFLW's 21
+// points are paired; a point written "-1 -1", AFLW's mark of an invisible point, is missing, in the
+// truths and in .pts predictions; the face box is that of the file's own points); predictions are
+// STEM.pts, STEM.ljson or STEM.csv in each prediction folder (the first that exists). A truth
+// without its normalisation pair (a profile whose far eye is not marked) is scored by the face box
+// only. labels: empty or one per folder. Throws InputError naming the folder or file: a folder
+// missing or without a .pts truth, a truth the scheme cannot be paired with, an unreadable
+// prediction or one with the wrong point count, a label count that does not match.
 PointFolderReport evaluatePointFolders(const std::filesystem::path& truthFolder,
                                        const std::vector<std::filesystem::path>& predictionFolders,
                                        const std::vector<std::string>& labels, const Scheme& scheme,

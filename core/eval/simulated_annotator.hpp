@@ -12,7 +12,7 @@
 // eye distance from its truth is one drag. After each correction the tracker re-tracks forward by
 // the studio's rules (core/track/correction_loop.hpp: up to the next keyframe, stopping at a
 // failed frame or where it rejoins the frames' previous rows). The tracker is an interface, so the
-// rules are tested without a video; core/eval/correction_benchmark.hpp gives the real one.
+// rules are tested without a video; core/eval/detail/correction_benchmark.hpp gives the real one.
 // docs/studio-track.md describes the benchmark.
 #pragma once
 

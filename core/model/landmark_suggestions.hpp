@@ -25,8 +25,8 @@ std::optional<Eigen::Vector3d> mirrorSuggestion(const Scheme& scheme, const Land
                                                 int index, const Eigen::Vector3d& left,
                                                 const SnapToSurface& snap);
 
-// The placed points kept, every other one from guessShape (core/model/shape_guess.hpp), snapped.
-// Throws Error if the model's point count differs from the scheme's.
+// The placed points kept, every other one from guessShape (core/model/detail/shape_guess.hpp),
+// snapped. Throws Error if the model's point count differs from the scheme's.
 LandmarkSet firstGuess(const ShapeModel& model, const LandmarkSet& points,
                        const Eigen::AlignedBox3d& bounds, const SnapToSurface& snap);
 

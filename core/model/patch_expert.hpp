@@ -1,6 +1,6 @@
 // A discriminative patch expert (issue 12): for one landmark, view and scale, a small neural field
 // on the normalised patch, trained on patches at the true position against displaced ones
-// (core/train/expert_training.hpp). Evaluated at every offset of a search window it gives a
+// (core/train/detail/expert_training.hpp). Evaluated at every offset of a search window it gives a
 // response map that peaks where the landmark lies; the RLMS optimiser (core/fit/rlms_optimiser.cpp)
 // fits the shape model to those maps. Unlike the thesis's PCA templates matched by NCC, the
 // filters learn which pixels tell the landmark from its surroundings, so they do not reproduce

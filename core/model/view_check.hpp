@@ -1,5 +1,5 @@
 // A view's own check (issue 26): whether a search that ended in this view sits on the face, from
-// the gradient-orientation features (core/refine/descent_features.hpp) at the view's visible
+// the gradient-orientation features (core/refine/detail/descent_features.hpp) at the view's visible
 // points. The point refiner's check is learnt from its own near-frontal faces and reads a turned
 // face's hidden points; the experts' response does not order a side view's right fits above its
 // wrong ones (ROC areas 0.64-0.78, docs/training.md). Each view's check looks only at what the

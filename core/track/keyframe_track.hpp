@@ -3,10 +3,10 @@
 // studio's correction loop starts a re-track), every other frame is tracked; frames before the
 // first keyframe start from a detection, as `clm3d track` does. How the studio's Adapt and issue
 // 29's correction benchmark re-track the frames nobody corrected with an adapted model (core/eval/
-// correction_benchmark.hpp), and, without keyframes, the benchmark's first track of a sequence.
-// The frames are decoded as `clm3d track` decodes them (trackDecodedFrames): a frame the video
-// declares but cannot give is a row marked unreadable in its place, so that every later row stays
-// on its own frame's truth. Safe on a worker thread.
+// detail/correction_benchmark.hpp), and, without keyframes, the benchmark's first track of a
+// sequence. The frames are decoded as `clm3d track` decodes them (trackDecodedFrames): a frame the
+// video declares but cannot give is a row marked unreadable in its place, so that every later row
+// stays on its own frame's truth. Safe on a worker thread.
 #pragma once
 
 #include <filesystem>

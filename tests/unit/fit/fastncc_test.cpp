@@ -1,7 +1,7 @@
 // Tests of the fastncc optimiser and of the derivatives it shares with gauss-newton
-// (core/fit/inverse_alignment.hpp, docs/fastncc.md): the 5-tap patch gradient, the closed-form
-// maximiser of the linearised NCC against finite differences, the template derivatives and the
-// NCC gradient against finite differences of the image, the chain through the projector's
+// (core/fit/detail/inverse_alignment.hpp, docs/fastncc.md): the 5-tap patch gradient, the
+// closed-form maximiser of the linearised NCC against finite differences, the template derivatives
+// and the NCC gradient against finite differences of the image, the chain through the projector's
 // Jacobian, the inverse sign, and recovery of a perturbed pose and shape of a rendered head.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The Nelder-Mead simplex: first the pure algorithm of core/fit/simplex.hpp on analytic functions
-// (a rotated ill-conditioned quadratic, Rosenbrock's valley, the iteration cap), then the
+// The Nelder-Mead simplex: first the pure algorithm of core/fit/detail/simplex.hpp on analytic
+// functions (a rotated ill-conditioned quadratic, Rosenbrock's valley, the iteration cap), then the
 // `nelder-mead` optimiser through the Fitter on a synthetic render with a known pose and shape
 // perturbation.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Powell's direction set method: first the pure algorithms of core/fit/direction_set.hpp on
+// Powell's direction set method: first the pure algorithms of core/fit/detail/direction_set.hpp on
 // analytic functions (bracketing, Brent's line search, Powell on an ill-conditioned rotated
 // quadratic and on Rosenbrock's valley), then the `powell` optimiser through the Fitter on a
 // synthetic render with a known pose and shape perturbation.

@@ -1,5 +1,5 @@
-// Tests of the response maps' inner loop (core/fit/window_dots.hpp): the dot products and the
-// moments of every window equal sums taken one window at a time, for patch sizes that do and do
+// Tests of the response maps' inner loop (core/fit/detail/window_dots.hpp): the dot products and
+// the moments of every window equal sums taken one window at a time, for patch sizes that do and do
 // not fill the vectorised kernel's lanes, several filters, and regions whose window count is not
 // a multiple of the kernel's group of windows.
 #include "core/fit/detail/window_dots.hpp"
