@@ -2,11 +2,11 @@
 // normalised templates and image patches (thesis appendix A.3, eq. A.14-A.20).
 //
 // Per landmark the template t_k moves by a translation s_k: t_k(s) ~ t_k + D_k s with D_k the
-// derivative of the normalised template (core/fit/inverse_alignment.hpp). Sampling the image at
-// x_k + dx matches the template best where the template, shifted by -dx, matches the patch at x_k:
-// so the template-side increment s found by least squares maps to the image-side increment
-// dx = -s (the inverse additive sign; checked by the tests). With the points' Jacobian J_k,
-// dx_k = J_k dp, and the shape prior, one step minimises
+// derivative of the normalised template (core/fit/detail/inverse_alignment.hpp). Sampling the image
+// at x_k + dx matches the template best where the template, shifted by -dx, matches the patch at
+// x_k: so the template-side increment s found by least squares maps to the image-side increment dx
+// = -s (the inverse additive sign; checked by the tests). With the points' Jacobian J_k, dx_k = J_k
+// dp, and the shape prior, one step minimises
 //
 //   1/2 sum_k |t_k - D_k J_k dp - g_k|^2 + lambda/2 |p + dp|^2_prior,
 //

@@ -1,8 +1,8 @@
 // The `nelder-mead` optimiser: the downhill simplex of the original CLM (Cristinacce and Cootes;
 // thesis section 4.2), kept as the baseline the thesis compares against. Minimises -meanNcc in
-// unit-step coordinates (core/fit/unit_step_objective.hpp) from a fresh simplex of size 2 unit
-// steps around the current parameters at every step: the templates change between steps, so the
-// old simplex's values would be stale, and its shape is not worth keeping the way Powell's
+// unit-step coordinates (core/fit/detail/unit_step_objective.hpp) from a fresh simplex of size 2
+// unit steps around the current parameters at every step: the templates change between steps, so
+// the old simplex's values would be stale, and its shape is not worth keeping the way Powell's
 // directions are.
 #include <memory>
 

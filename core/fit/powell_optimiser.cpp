@@ -1,6 +1,6 @@
 // The `powell` optimiser (thesis section 4.2.1): Powell's direction set method with Brent line
-// searches on -meanNcc, in unit-step coordinates (core/fit/unit_step_objective.hpp). One step() is
-// one Powell iteration: a line search along each direction, then the standard direction
+// searches on -meanNcc, in unit-step coordinates (core/fit/detail/unit_step_objective.hpp). One
+// step() is one Powell iteration: a line search along each direction, then the standard direction
 // replacement and a line search along the new direction. The direction set is kept across the
 // steps of a fit, so the conjugate directions learnt at one step carry to the next (the templates
 // change between steps, but the shape of the objective's valley barely does); it starts again from

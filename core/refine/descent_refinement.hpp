@@ -1,10 +1,10 @@
 // Supervised descent refinement of a fit's 2D points (after the search of the 3D model has placed
 // them): applying and training the cascade of core/model/descent_refiner.hpp, each stage
 // predicting the points' corrections from the gradient-orientation features around them
-// (descent_features.hpp). Trained on annotated photos from perturbed starts, it learns what real
-// faces look like around each point, where the patch experts of one view and scale see too little
-// (docs/real-faces.md). A model trained with photos carries one (ClmModel::refiner); the fit of a
-// still image applies it unless asked not to.
+// (detail/descent_features.hpp). Trained on annotated photos from perturbed starts, it learns what
+// real faces look like around each point, where the patch experts of one view and scale see too
+// little (docs/real-faces.md). A model trained with photos carries one (ClmModel::refiner); the fit
+// of a still image applies it unless asked not to.
 #pragma once
 
 #include <Eigen/Core>

@@ -3,7 +3,7 @@
 // gives its view; with its left-right mirror image and jittered placements, as the trainer places
 // annotated photos, core/train/photo_samples.hpp), and every patch expert and template mean of the
 // views they fall in moves towards them by maximum a posteriori adaptation: the general model's
-// expert is a prior worth `priorRegions` training regions (core/train/expert_training.hpp,
+// expert is a prior worth `priorRegions` training regions (core/train/detail/expert_training.hpp,
 // adaptPatchExpert) and its template mean a prior worth as many patches, so a handful of frames
 // nudges the model and the general training is not forgotten. The point refiner is adapted the same
 // way (core/refine/descent_refinement.hpp, adaptDescentRefiner: the general cascade a prior worth

@@ -48,8 +48,9 @@ struct TrainSettings {
   bool mirrorRightViews = true;  // build yaw > 0 views by mirroring yaw < 0 ones
   bool singleView = false;       // the 2D baseline: one frontal view, 2D shape model
   double hiddenShare = 0.5;      // hidden in more than this share of samples -> left out
-  // Discriminative patch experts (core/train/expert_training.hpp): trained from displacements of
-  // up to this many pixels at every scale; 0 trains none (a model for the template optimisers).
+  // Discriminative patch experts (core/train/detail/expert_training.hpp): trained from
+  // displacements of up to this many pixels at every scale; 0 trains none (a model for the template
+  // optimisers).
   int expertRadius = 6;
   double expertRidge = 0.1;  // ridge weight of the experts' regression
   // Units per expert: 1 a linear filter with a logistic output, more a neural field
