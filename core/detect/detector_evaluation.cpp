@@ -14,9 +14,9 @@
 #include "core/common/error.hpp"
 #include "core/common/json_fields.hpp"
 #include "core/fit/shape_projector.hpp"
-#include "core/scheme/ibug68_conversion.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/scheme/scheme.hpp"
+#include "core/scheme/scheme_map.hpp"
 #include "core/viz/image_file.hpp"
 
 namespace clm3d {
@@ -182,8 +182,19 @@ TruthFace readTruthFace(const fs::path& path) {
     throwInputError(path, "has fewer than 2 present points spanning a box; a truth needs a face");
   }
   face.visibleBox = cv::Rect2d(minX, minY, maxX - minX, maxY - minY);
-  if (raw.size() != 68 && raw.size() != 25) return face;  // another scheme: the box alone
-  face.points = raw.size() == 68 ? ibug68ToThesis25(raw) : raw;
+  // thesis25 points: the file's own, or through a built-in scheme map (iBUG 68, AFLW 21, whose
+  // faces may have an eye hidden); another scheme gives the box alone.
+  const bool complete = raw.size() == 68 || raw.size() == 25;
+  if (raw.size() == 25) {
+    face.points = raw;
+  } else if (const SchemeMap* map = schemeMapFor(raw.size(), Scheme::thesis25())) {
+    face.points = map->apply(raw);
+  } else {
+    return face;
+  }
+  // Only a complete mark-up anchors the face at its eyes (another scheme keeps its box's centre,
+  // so that detect's "found" means the same with or without a map).
+  if (!complete) return face;
   const auto [a, b] = Scheme::thesis25().normalisationPair();
   if (!face.points.has(a) || !face.points.has(b)) {
     throwInputError(path, "an eye centre is missing (iBUG 37-42 and 43-48 are needed)");
@@ -337,22 +348,27 @@ DetectorEvaluationReport evaluateDetectors(
     const cv::Mat image = readImage(images[i]);
     const TruthFace truth = readTruthFace(truths[i]);
     const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings.verticalFovDeg);
+    // The mean shape fitted to the truth's points gives the pose, eye midpoint and frontal eye
+    // distance even where the truth has one eye hidden (a profile, which is left out of the
+    // calibration when its visible points do not settle a pose); the eye target needs both eyes.
+    bool posed =
+        model && (truth.hasEyes() || settings.calibrationTarget == CalibrationTarget::MeanShape);
     TruthPose pose;
-    if (model && truth.hasEyes()) {
+    if (posed) {
       try {
         pose = truthPose(*model, camera, truth, settings);
       } catch (const InputError& e) {
-        throwInputError(truths[i], e.what());
+        if (truth.hasEyes()) throwInputError(truths[i], e.what());
+        posed = false;
       }
     }
-    const bool toMeanShape =
-        model && truth.hasEyes() && settings.calibrationTarget == CalibrationTarget::MeanShape;
+    const bool toMeanShape = posed && settings.calibrationTarget == CalibrationTarget::MeanShape;
     const Eigen::Vector2d calibrationEyeMid = toMeanShape ? pose.eyeMid : truth.eyeMid;
     std::string line;
     for (std::size_t d = 0; d < detectors.size(); ++d) {
       ImageDetection result;
       result.image = images[i];
-      result.iod = model && truth.hasEyes() ? pose.iodFrontal : truth.iod;
+      result.iod = posed ? pose.iodFrontal : truth.iod;
       result.yawDeg = pose.yawDeg;
       const auto begin = std::chrono::steady_clock::now();
       const std::vector<FaceBox> boxes = detectors[d].detect(image);

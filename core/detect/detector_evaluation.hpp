@@ -24,10 +24,11 @@ namespace clm3d {
 
 // The annotated face of a truth landmark file: 68 iBUG points (converted to the thesis's 25) or 25
 // thesis points, whose eye centres are thesis points 8 and 11 (the means of iBUG 36-41 and 42-47);
-// or the points of another scheme (AFLW's 21, where a turned head hides an eye), which give only
-// the box around their visible points.
+// or the points of another scheme (AFLW's 21, where a turned head hides an eye), whose face is
+// the box around their visible points, and whose points, where a built-in scheme map takes them
+// to thesis25, place the model's mean shape for the box calibration (`--calibrate-to mean-shape`).
 struct TruthFace {
-  LandmarkSet points;  // thesis25 order, 2D pixels (0-based); empty for another scheme
+  LandmarkSet points;  // thesis25 order, 2D pixels (0-based); empty for a scheme without a map
   Eigen::Vector2d eyeMid = Eigen::Vector2d::Zero();
   double iod = 0.0;  // distance between the eye centres, pixels; 0 for another scheme
   // The box around the file's present points, pixels (AFLW's "-1 -1" invisible points left out).

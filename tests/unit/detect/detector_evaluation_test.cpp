@@ -276,6 +276,25 @@ std::string calibrationReport(const std::string& where, const std::string& extra
          "\"sd_eye_offset_y\": null, \"yaw_deg\": null}}}]}";
 }
 
+// An AFLW truth (21 points, the turned-away eye's "-1 -1") is mapped to thesis25 points, which
+// place the mean shape for `--calibrate-to mean-shape` at profile, while its face stays the box of
+// its visible points (no eye centres to anchor it).
+TEST(DetectorEvaluation, AflwTruthWithAHiddenEyeKeepsItsBoxAndGivesThesisPoints) {
+  test::TempDir dir;
+  std::string text = "version: 1\nn_points: 21\n{\n";
+  for (int a = 0; a < 21; ++a) {
+    const bool hidden = a == 9 || a == 10 || a == 11;  // AFLW 10-12: one eye's corners and centre
+    text += hidden ? "-1 -1\n" : std::to_string(40 + 2 * a) + " " + std::to_string(50 + a) + "\n";
+  }
+  test::writeFile(dir / "profile.pts", text + "}\n");
+  const TruthFace face = readTruthFace(dir / "profile.pts");
+  EXPECT_FALSE(face.hasEyes());
+  ASSERT_EQ(face.points.size(), 25);
+  EXPECT_GE(face.points.presentCount(), 10);
+  EXPECT_NEAR(face.anchor().x(), face.visibleBox.x + 0.5 * face.visibleBox.width, 1e-9);
+  EXPECT_NEAR(face.anchor().y(), face.visibleBox.y + 0.5 * face.visibleBox.height, 1e-9);
+}
+
 TEST(DetectorEvaluation, CalibrationReportRejectsAnUnknownKeyNamingFileAndKey) {
   test::TempDir dir;
   test::writeFile(dir / "report.json", calibrationReport("", ""));
