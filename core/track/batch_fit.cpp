@@ -231,16 +231,18 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
 std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes) {
   std::ostringstream out;
   out << "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
-         "iterations,converged,error\n";
+         "iterations,converged,probability_source,view_probability,error\n";
   for (const ImageFitOutcome& o : outcomes) {
     out << csvCell(o.image.string()) << ',' << toString(o.status) << ','
         << fixedCell(o.fitMilliseconds, 3) << ',' << fixedCell(o.detectMilliseconds, 3) << ',';
     if (o.fit) {
       out << fixedCell(o.fit->probability, 6) << ',' << fixedCell(o.fit->searchScore, 6) << ','
           << fixedCell(o.viewPitchDeg, 1) << ',' << fixedCell(o.viewYawDeg, 1) << ','
-          << o.fit->iterations << ',' << (o.fit->converged ? 1 : 0) << ',';
+          << o.fit->iterations << ',' << (o.fit->converged ? 1 : 0) << ','
+          << csvCell(toString(o.fit->probabilitySource)) << ','
+          << fixedCell(o.fit->viewProbability, 6) << ',';
     } else {
-      out << ",,,,,,";
+      out << ",,,,,,,,";
     }
     out << csvCell(o.message) << '\n';
   }

@@ -140,8 +140,10 @@ ImageFitOutcome fitBatchImage(ImageFitter& fitter, const std::filesystem::path& 
                               const std::filesystem::path& output);
 
 // The summary table: a header "image,status,fit_ms,detect_ms,confidence,search_confidence,
-// view_pitch,view_yaw,iterations,converged,error" and one row per outcome (confidence is the fit's
-// probability, FitResult::probability; search_confidence the search's raw score, searchScore).
+// view_pitch,view_yaw,iterations,converged,probability_source,view_probability,error" and one row
+// per outcome (confidence is the fit's probability, FitResult::probability, and
+// probability_source where it came from; search_confidence the search's raw score, searchScore;
+// view_probability the view's own check, empty when the view has none).
 // Milliseconds with 3 decimals, the confidences with 6, view angles in degrees; empty cells where
 // there is no value. A cell holding a comma, quote or line break is quoted as RFC 4180 says.
 std::string formatBatchFitSummary(const std::vector<ImageFitOutcome>& outcomes);

@@ -90,8 +90,10 @@ TEST(BatchFitCli, FolderWithAnUnreadableImageGivesAnErrorRowAndExitsOne) {
   ASSERT_EQ(rows.size(), 5U) << test::readFile(out / "summary.csv");
   EXPECT_EQ(rows[0],
             "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
-            "iterations,converged,error");
+            "iterations,converged,probability_source,view_probability,error");
   EXPECT_TRUE(test::contains(rows[1], "a-turned.png,ok,")) << rows[1];
+  // A model trained from renders only: the probability is the built-in curve's, no view check.
+  EXPECT_TRUE(test::contains(rows[1], ",built-in NCC curve,,")) << rows[1];
   EXPECT_TRUE(test::contains(rows[2], "b-frontal.jpg,ok,")) << rows[2];
   EXPECT_TRUE(test::contains(rows[3], "c-blank.png,no-face,")) << rows[3];
   EXPECT_TRUE(test::contains(rows[3], "no face found")) << rows[3];

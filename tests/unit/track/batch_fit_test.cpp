@@ -65,15 +65,17 @@ TEST(BatchSummary, EmptyCellsForMissingValuesAndQuotedMessages) {
   ok.fit->converged = true;
   ok.viewPitchDeg = 0.0;
   ok.viewYawDeg = -30.0;
+  ok.fit->probabilitySource = ProbabilitySource::ViewCheck;
+  ok.fit->viewProbability = 0.75;
   ImageFitOutcome bad;
   bad.image = "b, \"odd\".jpg";
   bad.status = ImageFitStatus::Error;
   bad.message = "b.jpg: cannot be read, or so";
   EXPECT_EQ(formatBatchFitSummary({ok, bad}),
             "image,status,fit_ms,detect_ms,confidence,search_confidence,view_pitch,view_yaw,"
-            "iterations,converged,error\n"
-            "a.png,ok,3.142,,0.500000,0.250000,0.0,-30.0,7,1,\n"
-            "\"b, \"\"odd\"\".jpg\",error,,,,,,,,,\"b.jpg: cannot be read, or so\"\n");
+            "iterations,converged,probability_source,view_probability,error\n"
+            "a.png,ok,3.142,,0.500000,0.250000,0.0,-30.0,7,1,view check,0.750000,\n"
+            "\"b, \"\"odd\"\".jpg\",error,,,,,,,,,,,\"b.jpg: cannot be read, or so\"\n");
 }
 
 }  // namespace
