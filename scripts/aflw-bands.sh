@@ -11,7 +11,8 @@
 # Usage: scripts/aflw-bands.sh MODEL [OUT]   (default OUT aflw-bands-out; reruns skip what exists)
 # Environment: CLM3D (default build/release/bin/clm3d), CLM3D_DATA (default ../shared/data),
 # PEER_DLIB (the peer_dlib binary of ../shared/tools/peer-dlib; built into OUT when absent),
-# LFPW (1: also LFPW test), FIT_OPTIONS (extra options for clm3d fit, e.g. "--detector dlib").
+# LFPW (1: also LFPW test), FROM_TRUTH (1: also the fits from each face's truth, every one scored),
+# FIT_OPTIONS (extra options for clm3d fit, e.g. "--detector dlib").
 # The photos are research-only: OUT holds fits of them, never commit it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -99,5 +100,23 @@ if [[ ${LFPW:-0} == 1 && -d $LFPW_TEST ]]; then
     --pred-dir "$OUT/lfpw/dlib" --label dlib --points 1-18,22 --model "$MODEL" \
     --band-table "$OUT/lfpw-bands.md" | grep -E "^(yaw bands|\|yaw\|)"
   cat "$OUT/lfpw-bands.md"
+fi
+# 5. With FROM_TRUTH=1: the same model started from each face's own truth (the AFLW 21 points read
+# as thesis25), every fit kept: what the model places from a right start, and what the check
+# accepts of it. The "all" folder holds the points without summary.csv, so every fit counts.
+if [[ ${FROM_TRUTH:-0} == 1 ]]; then
+  if [[ ! -f $OUT/clm3d-truth/summary.csv ]]; then
+    "$CLM3D" fit --model "$MODEL" --images "$AFLW/test.txt" --init-dir "$OUT/truth" \
+      --out-dir "$OUT/clm3d-truth" --keep-rejected --quiet "${FIT_EXTRA[@]}" \
+      > "$OUT/logs/fit-aflw-truth.log" 2>&1 || true  # a truth that settles no pose is an error row
+  fi
+  mkdir -p "$OUT/clm3d-truth-all"
+  cp "$OUT"/clm3d-truth/*.pts "$OUT/clm3d-truth-all/"
+  echo "== clm3d from the truth, every fit ($OUT/bands-from-truth-all.md)"
+  "$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d-truth-all" --label all \
+    --poses "$AFLW/index.csv" --band-table "$OUT/bands-from-truth-all.md" | grep "^|yaw|"
+  echo "== clm3d from the truth, the fits the check accepts ($OUT/bands-from-truth.md)"
+  "$CLM3D" eval-points --truth-dir "$OUT/truth" --pred-dir "$OUT/clm3d-truth" --label accepted \
+    --poses "$AFLW/index.csv" --band-table "$OUT/bands-from-truth.md" | grep "^|yaw|"
 fi
 echo "aflw-bands: results in $OUT"

@@ -219,7 +219,7 @@ fi
 # 9. The rest of docs/real-faces.md with the same model: the AFLW bands (and LFPW by band), the
 # photo timing (which trains real-705.json for its held-out photos) and the load time.
 if [[ ${AFLW_BANDS:-1} == 1 && -f $DATA/photos/aflw21/test.txt ]]; then
-  CLM3D=$CLM3D CLM3D_DATA=$DATA PEER_DLIB=$PEER_DLIB LFPW=1 \
+  CLM3D=$CLM3D CLM3D_DATA=$DATA PEER_DLIB=$PEER_DLIB LFPW=1 FROM_TRUTH=1 \
     bash scripts/aflw-bands.sh "$MODEL" "$OUT/aflw"
 fi
 if [[ ${PHOTO_TIME:-1} == 1 ]]; then

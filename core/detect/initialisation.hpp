@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/common/error.hpp"
@@ -34,6 +35,12 @@ struct BoxCalibration {
 
 // The calibration of the detector's frontal or profile boxes.
 BoxCalibration boxCalibration(DetectorKind detector, bool profile);
+
+// A second placement of a profile box, for a fit its first placement leaves in doubt: measured on
+// real turned faces (AFLW), where the first (boxCalibration, measured on renders, which profile
+// boxes on near-frontal photos also suit) puts a real profile too small and too high in the box.
+// nullopt for a frontal box and for detectors without one.
+std::optional<BoxCalibration> turnedFaceCalibration(const FaceBox& box);
 
 // The mean shape posed to fill the box: depth from the calibrated eye distance, the eye midpoint
 // at its calibrated place in the box, yaw 0 for frontal boxes and the calibrated profile yaw for

@@ -66,11 +66,10 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
       std::min(faces.size(), static_cast<std::size_t>(std::max(1, search.maxFaces)));
   std::optional<FitResult> best;
   std::optional<InputError> firstError;  // a face whose start left the image: the next is tried
-  std::size_t face = 0;
-  while (face < count) {
-    FitState start = stateFromBox(model, fitter.camera(), faces[face]);
+  // Searches one placement of a face; true when its fit is accepted (then kept as the best).
+  const auto accepts = [&](const FaceBox& box, const BoxCalibration& calibration) {
+    FitState start = stateFromBox(model, fitter.camera(), box, calibration);
     if (search.placed) start = search.placed(start);
-    ++face;
     int made = 0;
     std::optional<FitResult> fit;
     try {
@@ -79,14 +78,26 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
       if (!firstError) firstError = e;
     }
     if (searches != nullptr) *searches += made;
-    if (!fit) continue;
+    if (!fit) return false;
     if (!search.accepted || search.accepted(*fit)) {
       best = std::move(fit);  // the first accepted fit, whatever the probability of those before
-      break;
+      return true;
     }
     if (!best || fit->probability > best->probability) best = std::move(fit);
+    return false;
+  };
+  std::size_t face = 0;
+  bool found = false;
+  while (face < count && !found) {
+    const FaceBox& box = faces[face++];
+    if (!search.turnedPlacement) {
+      found = accepts(box, boxCalibration(box.detector, box.profile));
+    } else if (const auto turned = turnedFaceCalibration(box)) {
+      found = accepts(box, *turned);
+    }
   }
   if (tried != nullptr) *tried = static_cast<int>(face);
+  if (!best && !firstError) throw InputError("face search: no profile box to place again");
   if (!best) throw *firstError;  // no face could be searched
   return std::move(*best);
 }
@@ -156,11 +167,11 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
                                            const std::vector<FaceBox>& faces,
                                            const FaceSearch& search, double* detectMilliseconds) {
   std::optional<FitResult> best;
-  const auto consider = [&](const std::vector<FaceBox>& found) {
-    FitResult fit = fitFromBestFace(fitter, model, image, found, search);
+  const auto consider = [&](const std::vector<FaceBox>& found, const FaceSearch& how) {
+    FitResult fit = fitFromBestFace(fitter, model, image, found, how);
     if (!best || fit.probability > best->probability) best = std::move(fit);
   };
-  if (!faces.empty()) consider(faces);
+  if (!faces.empty()) consider(faces, search);
   for (const double angle : tiltAngles(search.tiltSteps, search.tiltStepDeg)) {
     if (best && (!search.accepted || search.accepted(*best))) break;
     const auto begin = std::chrono::steady_clock::now();
@@ -170,7 +181,17 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
               .count();
     }
-    if (!turned.empty()) consider(turned);
+    if (!turned.empty()) consider(turned, search);
+  }
+  // Still none accepted: the upright profile boxes placed as real turned faces sit
+  // (turnedFaceCalibration), last, so that a photo that another box or a tilted copy fits is
+  // unchanged.
+  if (search.turnedPlacements && best && search.accepted && !search.accepted(*best) &&
+      std::any_of(faces.begin(), faces.end(),
+                  [](const FaceBox& box) { return turnedFaceCalibration(box).has_value(); })) {
+    FaceSearch turned = search;
+    turned.turnedPlacement = true;
+    consider(faces, turned);
   }
   if (best && best->probability < search.widerBelow) {
     FitResult wider =

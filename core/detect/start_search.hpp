@@ -76,10 +76,12 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
 // yes to a fit or maxFaces faces are searched; returns the accepted fit, or without one the most
 // probable (the first on ties); in `tried`, the number of faces searched, and `searches`, when
 // given, has the searches made added. A false detection ranked first then costs one more search
-// instead of the face. `clm3d fit`, `clm3d batch` (through fitFromDetections) and the tracker's
-// detections all search their faces with it. A face whose start puts it outside the image is
-// passed over. Throws InputError for an empty `faces`, a box stateFromBox refuses, or when no
-// face could be searched (the first face's error).
+// instead of the face. With search.turnedPlacement, only the profile boxes are searched, each from
+// its second placement (turnedFaceCalibration: where real turned faces sit in such a box). `clm3d
+// fit`, `clm3d batch` (through fitFromDetections) and the tracker's detections all search their
+// faces with it. A face whose start puts it outside the image is passed over. Throws InputError for
+// an empty `faces`, a box stateFromBox refuses, or when no face could be searched (the first face's
+// error).
 struct FaceSearch {
   int maxFaces = 1;
   StartSearchSettings starts;
@@ -101,6 +103,11 @@ struct FaceSearch {
   double viewsBelow = 0.0;
   bool viewsOfAll = false;
   double viewMargin = 0.02;
+  // fitFromDetections: while no fit is accepted after the upright faces and the tilted copies,
+  // the upright profile boxes are searched from their second placement (turnedPlacement).
+  bool turnedPlacements = false;
+  // fitFromBestFace: search only the profile boxes, placed by turnedFaceCalibration.
+  bool turnedPlacement = false;
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,
@@ -113,7 +120,9 @@ std::vector<double> tiltAngles(int steps, double stepDeg);
 // possibly none); then, while no fit is accepted (search.accepted; without it, only when `faces`
 // is empty), over detector.detectTurned(image, angle) for each of tiltAngles(search.tiltSteps,
 // search.tiltStepDeg) that finds a face; then, when the most probable fit's probability is below
-// search.widerBelow, fitFromBestStart from its state with search.wider; then, below
+// search.widerBelow (after, with search.turnedPlacements while none is accepted, the upright
+// profile boxes from their second placement), fitFromBestStart from its state with search.wider;
+// then, below
 // search.viewsBelow, searchNeighbouringViews. Returns the most probable fit, nullopt when no face
 // was found upright or turned. `detectMilliseconds`, when given, has the turned detections' time
 // added.

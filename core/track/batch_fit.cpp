@@ -165,6 +165,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       search.wider = settings_.widerSearch;
       search.viewsBelow = settings_.viewSearchBelow;
       search.viewsOfAll = settings_.viewSearchAll;
+      search.turnedPlacements = checked && settings_.turnedPlacements;
       search.viewMargin = settings_.viewSearchMargin;
       std::optional<FitResult> found = fitFromDetections(fitter, *model_, lastImage_, detector(),
                                                          faces, search, &turnedMilliseconds);

@@ -78,6 +78,13 @@ struct FaceSearchSettings {
   // degrees of upright. 0 = off.
   int tiltSteps = 2;
   double tiltStepDeg = FaceSearch{}.tiltStepDeg;
+  // Profile boxes placed again: while no fit passes after the upright faces and the tilted
+  // copies, the upright profile boxes are searched from their second placement, where real turned
+  // faces sit in such a box (turnedFaceCalibration, core/detect/initialisation.hpp;
+  // FaceSearch::turnedPlacements). On the 1,200 AFLW test faces, faces fitted right (error under
+  // 0.08 of the face box) per |yaw| band 362 / 220 / 63 -> 362 / 243 / 109, the 224 LFPW test
+  // photos unchanged (docs/initialisation.md#profile-boxes-placed-as-real-turned-faces).
+  bool turnedPlacements = true;
   // Unsure fits: when the kept fit's check probability is below this, it is searched again from
   // the grid of widerSearch around it (moved and rescaled copies of it), and the more confident fit
   // kept (FaceSearch::widerBelow): a face the detector boxed too small or too large. On 100 LFPW

@@ -142,6 +142,11 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(real("tilt-step", "Tilted-face turn step", "Search", photo, 5.0, 45.0, 1,
                          "degrees between those turns",
                          [](S& s) -> double& { return s.tiltStepDeg; }));
+  options.push_back(flag(
+      "no-turned-placements", "Place profile boxes as real turned faces", "Search", photo,
+      "when no fit passes after the upright faces and the tilted copies, do not search the "
+      "profile boxes again placed as real turned faces sit in them (docs/initialisation.md)",
+      [](S& s) -> bool& { return s.turnedPlacements; }, true));
   options.push_back(real("wider-search-below", "Wider search below (check)", "Search", photo, 0.0,
                          1.0, 2,
                          "a fit whose point check gives a probability below this is searched "

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/detect/initialisation.hpp"
 #include "tests/support/fit_fixture.hpp"
 
 namespace clm3d {
@@ -73,6 +74,65 @@ TEST(StartSearch, TheGridRunsOnlyWhenTheStartsFitIsBelowTheThreshold) {
   const FitResult doubted = fitFromBestStart(fitter, model, scene.image, far, grid, &searches);
   EXPECT_EQ(searches, 9);
   EXPECT_LT(errorOf(doubted, scene), 0.5 * errorOf(fromFar, scene));
+}
+
+// Profile boxes placed again: with turnedPlacement the face loop searches only the profile boxes,
+// each from its second placement (where real turned faces sit in such a box); fitFromDetections
+// does so when nothing else was accepted, and keeps the more probable fit.
+TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
+  Fitter fitter(model, scene.camera);
+  const Eigen::Vector2d low = scene.truthPoints.rowwise().minCoeff();
+  const Eigen::Vector2d high = scene.truthPoints.rowwise().maxCoeff();
+  const double side = 1.3 * (high - low).maxCoeff();
+  const Eigen::Vector2d centre = 0.5 * (low + high);
+  FaceBox profile;
+  profile.box = cv::Rect2d(centre.x() - 0.5 * side, centre.y() - 0.5 * side, side, side);
+  profile.profile = true;  // not mirrored: turned to the image's left, negative yaw
+  FaceBox frontal = profile;
+  frontal.profile = false;
+  FaceBox dlibSide = profile;
+  dlibSide.detector = DetectorKind::DlibHog;
+  EXPECT_FALSE(turnedFaceCalibration(frontal).has_value());
+  EXPECT_FALSE(turnedFaceCalibration(dlibSide).has_value());
+  const std::optional<BoxCalibration> turned = turnedFaceCalibration(profile);
+  ASSERT_TRUE(turned.has_value());
+  const FitResult first = fitter.fit(scene.image, stateFromBox(model, scene.camera, profile));
+  const FitResult second =
+      fitter.fit(scene.image, stateFromBox(model, scene.camera, profile, *turned));
+  ASSERT_NE(first.probability, second.probability) << "the two placements fit alike";
+
+  FaceSearch search;
+  search.maxFaces = 3;
+  search.turnedPlacement = true;
+  int tried = 0, searches = 0;
+  const FitResult placed = fitFromBestFace(fitter, model, scene.image, {frontal, profile, dlibSide},
+                                           search, &tried, &searches);
+  EXPECT_EQ(tried, 2) << "the frontal box passed over, the profile box's fit kept";
+  EXPECT_EQ(searches, 1) << "only the cascade's profile box";
+  EXPECT_EQ(placed.probability, second.probability);
+  EXPECT_THROW(fitFromBestFace(fitter, model, scene.image, {frontal}, search), InputError);
+
+  // fitFromDetections: nothing is accepted, so the profile box is placed again and the more
+  // probable fit kept; without turnedPlacements, or with the first fit accepted, it is not.
+  FaceDetector detector;
+  FaceSearch rejecting;
+  rejecting.accepted = [](const FitResult&) { return false; };
+  rejecting.turnedPlacements = true;
+  const auto both = fitFromDetections(fitter, model, scene.image, detector, {profile}, rejecting);
+  ASSERT_TRUE(both.has_value());
+  EXPECT_EQ(both->probability, std::max(first.probability, second.probability));
+  rejecting.turnedPlacements = false;
+  const auto once = fitFromDetections(fitter, model, scene.image, detector, {profile}, rejecting);
+  ASSERT_TRUE(once.has_value());
+  EXPECT_EQ(once->probability, first.probability);
+  FaceSearch accepting;
+  accepting.accepted = [](const FitResult&) { return true; };
+  accepting.turnedPlacements = true;
+  const auto kept = fitFromDetections(fitter, model, scene.image, detector, {profile}, accepting);
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_EQ(kept->probability, first.probability);
 }
 
 // A doubted fit is searched from the neighbouring views, unless its probability does not compare
