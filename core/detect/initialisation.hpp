@@ -36,7 +36,7 @@ struct BoxCalibration {
 // The calibration of the detector's frontal or profile boxes.
 BoxCalibration boxCalibration(DetectorKind detector, bool profile);
 
-// A second placement of a profile box, for a fit its first placement leaves in doubt: measured on
+// A second placement of a profile box, tried when no fit from the first is accepted: measured on
 // real turned faces (AFLW), where the first (boxCalibration, measured on renders, which profile
 // boxes on near-frontal photos also suit) puts a real profile too small and too high in the box.
 // nullopt for a frontal box and for detectors without one.

@@ -90,7 +90,7 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
   bool found = false;
   while (face < count && !found) {
     const FaceBox& box = faces[face++];
-    if (!search.turnedPlacement) {
+    if (search.placement == BoxPlacement::Calibrated) {
       found = accepts(box, boxCalibration(box.detector, box.profile));
     } else if (const auto turned = turnedFaceCalibration(box)) {
       found = accepts(box, *turned);
@@ -190,7 +190,7 @@ std::optional<FitResult> fitFromDetections(Fitter& fitter, const ClmModel& model
       std::any_of(faces.begin(), faces.end(),
                   [](const FaceBox& box) { return turnedFaceCalibration(box).has_value(); })) {
     FaceSearch turned = search;
-    turned.turnedPlacement = true;
+    turned.placement = BoxPlacement::TurnedFace;
     consider(faces, turned);
   }
   if (best && best->probability < search.widerBelow) {

@@ -76,12 +76,16 @@ FitResult searchNeighbouringViews(Fitter& fitter, const ClmModel& model, const c
 // yes to a fit or maxFaces faces are searched; returns the accepted fit, or without one the most
 // probable (the first on ties); in `tried`, the number of faces searched, and `searches`, when
 // given, has the searches made added. A false detection ranked first then costs one more search
-// instead of the face. With search.turnedPlacement, only the profile boxes are searched, each from
-// its second placement (turnedFaceCalibration: where real turned faces sit in such a box). `clm3d
-// fit`, `clm3d batch` (through fitFromDetections) and the tracker's detections all search their
-// faces with it. A face whose start puts it outside the image is passed over. Throws InputError for
-// an empty `faces`, a box stateFromBox refuses, or when no face could be searched (the first face's
-// error).
+// instead of the face. With search.placement TurnedFace, only the profile boxes are searched, each
+// from its second placement (turnedFaceCalibration: where real turned faces sit in such a box).
+// `clm3d fit`, `clm3d batch` (through fitFromDetections) and the tracker's detections all search
+// their faces with it. A face whose start puts it outside the image is passed over. Throws
+// InputError for an empty `faces`, a box stateFromBox refuses, or when no face could be searched
+// (the first face's error). Where a face box puts its start: by the detector's calibration
+// (boxCalibration), or, for the cascade's profile boxes only (the others are passed over), where
+// real turned faces sit in such a box (turnedFaceCalibration).
+enum class BoxPlacement { Calibrated, TurnedFace };
+
 struct FaceSearch {
   int maxFaces = 1;
   StartSearchSettings starts;
@@ -104,10 +108,10 @@ struct FaceSearch {
   bool viewsOfAll = false;
   double viewMargin = 0.02;
   // fitFromDetections: while no fit is accepted after the upright faces and the tilted copies,
-  // the upright profile boxes are searched from their second placement (turnedPlacement).
+  // the upright profile boxes are searched from their second placement (BoxPlacement::TurnedFace).
   bool turnedPlacements = false;
-  // fitFromBestFace: search only the profile boxes, placed by turnedFaceCalibration.
-  bool turnedPlacement = false;
+  // fitFromBestFace: how each box places its start.
+  BoxPlacement placement = BoxPlacement::Calibrated;
 };
 FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& image,
                           const std::vector<FaceBox>& faces, const FaceSearch& search,

@@ -76,9 +76,9 @@ TEST(StartSearch, TheGridRunsOnlyWhenTheStartsFitIsBelowTheThreshold) {
   EXPECT_LT(errorOf(doubted, scene), 0.5 * errorOf(fromFar, scene));
 }
 
-// Profile boxes placed again: with turnedPlacement the face loop searches only the profile boxes,
-// each from its second placement (where real turned faces sit in such a box); fitFromDetections
-// does so when nothing else was accepted, and keeps the more probable fit.
+// Profile boxes placed again: with BoxPlacement::TurnedFace the face loop searches only the profile
+// boxes, each from its second placement (where real turned faces sit in such a box);
+// fitFromDetections does so when nothing else was accepted, and keeps the more probable fit.
 TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
@@ -105,7 +105,7 @@ TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
 
   FaceSearch search;
   search.maxFaces = 3;
-  search.turnedPlacement = true;
+  search.placement = BoxPlacement::TurnedFace;
   int tried = 0, searches = 0;
   const FitResult placed = fitFromBestFace(fitter, model, scene.image, {frontal, profile, dlibSide},
                                            search, &tried, &searches);
