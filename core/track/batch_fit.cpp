@@ -22,6 +22,7 @@
 #include "core/detect/start_search.hpp"
 #include "core/refine/refined_fit.hpp"
 #include "core/scheme/landmark_file.hpp"
+#include "core/track/detail/unrefined_landmarks.hpp"
 #include "core/viz/image_file.hpp"
 
 namespace clm3d {
@@ -190,6 +191,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       refineFit(*model_, lastImage_, fit,
                 RefinerStarts{settings_.refineRuns - 1, settings_.refineSpread});
     }
+    placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];
