@@ -191,7 +191,8 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       refineFit(*model_, lastImage_, fit,
                 RefinerStarts{settings_.refineRuns - 1, settings_.refineSpread});
     }
-    placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
+    // A start from marked points brought its outline with it; a box brought none.
+    if (startPoints.empty()) placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];
