@@ -44,7 +44,7 @@ class VideoAnnotatorTracker final : public AnnotatorTracker {
         cancel_(cancel) {
     const VideoReader probe(video_);
     camera_ =
-        Camera::fromVerticalFov(probe.width(), probe.height(), settings_.tracker.verticalFovDeg);
+        Camera::fromVerticalFov(probe.width(), probe.height(), videoFovDeg(settings_.tracker));
   }
 
   SpanRetrack retrack(int /*corrected*/, const Eigen::Matrix2Xd& points,

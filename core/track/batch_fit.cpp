@@ -107,7 +107,8 @@ FaceDetector& ImageFitter::detector() {
 Fitter& ImageFitter::fitterFor(const cv::Mat& image) {
   if (!fitter_ || fitter_->camera().width != image.cols || fitter_->camera().height != image.rows) {
     fitter_.reset();
-    const Camera camera = Camera::fromVerticalFov(image.cols, image.rows, settings_.verticalFovDeg);
+    const Camera camera =
+        Camera::fromVerticalFov(image.cols, image.rows, stillImageFovDeg(settings_));
     fitter_ = std::make_unique<Fitter>(*model_, camera, settings_.fit);
   }
   return *fitter_;

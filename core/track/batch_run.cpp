@@ -304,7 +304,7 @@ BatchSettings batchSettings(const TrackerSettings& tracker) {
 std::map<std::string, std::string> batchOptions(const BatchJob& job,
                                                 const BatchSettings& settings) {
   std::map<std::string, std::string> options = changedTrackerOptions(settings.track);
-  if (settings.image.verticalFovDeg != kDefaultVerticalFovDeg) {
+  if (settings.image.verticalFovDeg > 0.0) {
     std::ostringstream fov;
     fov << settings.image.verticalFovDeg;
     options["fov"] = fov.str();

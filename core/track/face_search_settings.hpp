@@ -20,8 +20,9 @@ namespace clm3d {
 struct FaceSearchSettings {
   // --- Read by both ---------------------------------------------------------------------------
   FitSettings fit;
-  // The camera of every image or frame (`--fov`): a pinhole with this vertical field of view.
-  double verticalFovDeg = kDefaultVerticalFovDeg;
+  // The camera of every image or frame (`--fov`): a pinhole with this vertical field of view; 0:
+  // the input's default (stillImageFovDeg, videoFovDeg).
+  double verticalFovDeg = 0.0;
   DetectorKind detector = DetectorKind::Cascade;
   // Where a detected face is searched from: the detector's start and a grid of moved copies, the
   // most confident fit kept (core/detect/start_search.hpp). One step of 0.10 eye distances (9
@@ -105,5 +106,14 @@ struct FaceSearchSettings {
 
   bool operator==(const FaceSearchSettings&) const = default;
 };
+
+// The vertical field of view of the camera of a still image and of a video's frames: the one
+// given, or kStillImageVerticalFovDeg and kDefaultVerticalFovDeg.
+inline double stillImageFovDeg(const FaceSearchSettings& settings) {
+  return settings.verticalFovDeg > 0.0 ? settings.verticalFovDeg : kStillImageVerticalFovDeg;
+}
+inline double videoFovDeg(const FaceSearchSettings& settings) {
+  return settings.verticalFovDeg > 0.0 ? settings.verticalFovDeg : kDefaultVerticalFovDeg;
+}
 
 }  // namespace clm3d

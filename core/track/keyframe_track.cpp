@@ -16,7 +16,7 @@ TrackSummary trackThroughKeyframes(const std::filesystem::path& video, const Clm
                                    const ProgressCallback& progress, const CancelToken* cancel) {
   VideoReader reader(video);
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), videoFovDeg(settings));
   Tracker tracker(model, camera, settings);
   const int count = truth.frameCount();
   const auto trackFrame = [&](const cv::Mat& image, int f, double timestamp,

@@ -192,7 +192,7 @@ TrackSummary trackVideoFaces(const std::filesystem::path& video, const ClmModel&
                              int frameLimit) {
   VideoReader reader(video);
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), videoFovDeg(settings));
   MultiFaceTracker tracker(model, camera, settings, faces);
   const auto trackFrame = [&](const cv::Mat& image, int index, double timestamp,
                               TrackSummary& summary) {

@@ -28,7 +28,7 @@ TrackSummary retrackFrom(
     return summary;
   }
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), videoFovDeg(settings));
   Tracker tracker(model, camera, settings);
   tracker.setState(state, view);
   const int remaining = total > 0 ? total - corrected - 1 : 0;
@@ -50,7 +50,7 @@ void retrackSpan(const std::filesystem::path& video, const ClmModel& model,
     }
   }
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), videoFovDeg(settings));
   Tracker tracker(model, camera, settings);
   tracker.setState(state, view);
   const std::pair<int, int> eyes = model.scheme().normalisationPair();

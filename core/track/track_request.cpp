@@ -101,7 +101,7 @@ CommandReport run(const R& args, const ProgressCallback& progress,
   std::optional<VideoReader> video(std::in_place, args.video);
   {
     const Camera camera =
-        Camera::fromVerticalFov(video->width(), video->height(), args.tracker.verticalFovDeg);
+        Camera::fromVerticalFov(video->width(), video->height(), videoFovDeg(args.tracker));
     if (!args.init.empty()) initial = stateFromPointsFile(model, camera, args.init);
     if (!args.overlay.empty()) {
       overlay = std::make_unique<VideoWriter>(args.overlay, video->width(), video->height(),

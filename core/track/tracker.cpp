@@ -450,7 +450,7 @@ TrackSummary trackVideo(VideoReader& reader, const ClmModel& model, const Tracke
                         std::optional<FitState> initial, std::unique_ptr<FaceDetector> detector,
                         int frameLimit) {
   const Camera camera =
-      Camera::fromVerticalFov(reader.width(), reader.height(), settings.verticalFovDeg);
+      Camera::fromVerticalFov(reader.width(), reader.height(), videoFovDeg(settings));
   Tracker tracker(model, camera, settings);
   if (detector) tracker.setDetector(std::move(detector));
   if (initial) tracker.setState(*initial);

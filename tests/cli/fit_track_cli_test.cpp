@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <opencv2/core.hpp>
 
+#include "core/common/atomic_file.hpp"
 #include "core/eval/synthetic_sequence.hpp"
 #include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
@@ -32,7 +33,8 @@ void fillFitFiles(FitFiles& f) {
   {
     f.model = (f.dir / "model.clm3d").string();
     saveModel(test::fitTestModel(), f.model);
-    // The camera of `clm3d fit` is the default 40-degree one, as the fixture's.
+    // Rendered with the video camera's 40 degrees; `clm3d fit` assumes a still image's 20 unless
+    // told (FitCli.AStillImagesCameraIs20DegreesUnlessFovSaysOtherwise).
     f.scene = test::makeFitScene(test::fitTestModel(), 0.0, 15.0, test::kHeldOutHead, 70.0);
     f.image = (f.dir / "face.png").string();
     writeImage(f.image, f.scene.image);
@@ -79,6 +81,22 @@ TEST(FitCli, FitsFromTheFaceDetector) {
   const auto result = runClm3d("fit --model " + f.model + " --image " + f.image + " --out " + out);
   ASSERT_EQ(result.exitCode, 0) << result.output;
   EXPECT_LT(errorOf(out, f.scene), 0.12);
+}
+
+// A still image's camera has a 20-degree field of view by default (kStillImageVerticalFovDeg): the
+// points written without --fov are those of --fov 20, byte for byte, not those of --fov 40.
+TEST(FitCli, AStillImagesCameraIs20DegreesUnlessFovSaysOtherwise) {
+  const FitFiles& f = fitFiles();
+  const auto fit = [&](const std::string& name, const std::string& options) {
+    const std::string out = (f.dir / name).string();
+    const auto result =
+        runClm3d("fit --model " + f.model + " --image " + f.image + " --out " + out + options);
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    return readTextFile(out);
+  };
+  const std::string byDefault = fit("camera-default.pts", "");
+  EXPECT_EQ(byDefault, fit("camera-20.pts", " --fov 20"));
+  EXPECT_NE(byDefault, fit("camera-40.pts", " --fov 40"));
 }
 
 TEST(FitCli, EveryOptimiserRunsFromTheCommandLine) {
