@@ -11,6 +11,7 @@
 #include "core/detect/initialisation.hpp"
 #include "core/geometry/camera.hpp"
 #include "core/refine/refined_fit.hpp"
+#include "core/track/detail/unrefined_landmarks.hpp"
 #include "core/video/frame_prefetcher.hpp"
 #include "core/video/video_reader.hpp"
 
@@ -255,7 +256,13 @@ TrackStep Tracker::track(const cv::Mat& input, int index, double timestamp) {
   } else {
     lose();
   }
+  // The row's outline follows the refined points, as a photo's does; the next frame still starts
+  // from the state carried above, so tracking is as before.
   if (step.fit) {
+    const auto begin = std::chrono::steady_clock::now();
+    placeUnrefinedLandmarks(*model_, camera_, *step.fit);
+    step.fitMilliseconds +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
     step.row.success = step.failure == TrackFailure::None;
     step.row.confidence = step.fit->probability;
     step.row.view = step.fit->view;

@@ -4,8 +4,9 @@
 // face, its size included; left where the search put them, the outline kept the search's error:
 // on AFLW faces the ear lobes sat 0.14 of the face box inside the truth while the inner points
 // were within 0.05 (docs/real-faces.md, "The outline follows the refined points"). Photos fitted
-// from a detector's box take it; a start from marked points keeps the outline it was given (the
-// shape's ear lobes sit inside AFLW's: from the truth they ended 0.003-0.005 of the box worse).
+// from a detector's box and every tracked frame's row take it; a photo started from marked points
+// keeps the outline it was given (from the AFLW truth, the shape's ear lobes were 0.003-0.005 of
+// the box worse than the given ones).
 #pragma once
 
 #include "core/fit/fitter.hpp"

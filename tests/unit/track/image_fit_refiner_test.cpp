@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <opencv2/core.hpp>
@@ -20,6 +21,7 @@
 #include "core/refine/view_check.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/batch_fit.hpp"
+#include "core/track/detail/unrefined_landmarks.hpp"
 #include "core/track/tracker.hpp"
 #include "core/train/refiner_training.hpp"
 #include "core/viz/image_file.hpp"
@@ -48,13 +50,18 @@ using test::savePhoto;
 // and scaled copies whose mean is the start) the placements average to the same. Its check scores
 // every fit alike: probability 0.8.
 constexpr double kKnownCheckProbability = 0.8;
-DescentRefiner knownRefiner() {
+DescentRefiner knownRefiner(const std::vector<int>& without = {}) {
   DescentRefiner refiner;
   const DescentRefiner& trained = test::photoRefiner();
-  refiner.landmarks = trained.landmarks;
+  std::vector<Eigen::Index> kept;
+  for (std::size_t i = 0; i < trained.landmarks.size(); ++i) {
+    if (std::find(without.begin(), without.end(), trained.landmarks[i]) != without.end()) continue;
+    refiner.landmarks.push_back(trained.landmarks[i]);
+    kept.push_back(static_cast<Eigen::Index>(i));
+  }
   refiner.leftEye = trained.leftEye;
   refiner.rightEye = trained.rightEye;
-  refiner.meanShape = trained.meanShape;
+  refiner.meanShape = trained.meanShape(Eigen::all, kept);
   const auto n = static_cast<Eigen::Index>(refiner.landmarks.size());
   const Eigen::Index d = n * kDescentFeaturesPerPoint;
   DescentStage stage;
@@ -221,6 +228,30 @@ TEST(ImageFitRefiner, TheTrackerRefinesATrackedFramesRowUnlessToldNotTo) {
                 .maxCoeff(),
             1e-3);
   EXPECT_GT((refined.row.points - plain.row.points).norm(), 1.0);
+}
+
+// With a refiner that leaves the ear lobes out, the tracker's row places them where the shape
+// fitted to the refined points puts them (placeUnrefinedLandmarks), not where the search left
+// them; the next frame's state is the search's as before.
+TEST(ImageFitRefiner, TheTrackersRowOutlineFollowsTheRefinedPoints) {
+  constexpr int kLeftLobe = 18, kRightLobe = 24;
+  ClmModel model = fitTestModel();
+  model.refiner = knownRefiner({kLeftLobe, kRightLobe});
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead);
+  TrackerSettings settings;
+  settings.fit.optimiser = "fastncc";
+  Tracker tracker(model, scene.camera, settings);
+  tracker.setState(scene.truth, -1);
+  const TrackStep step = tracker.track(scene.image, 0, 0.0);
+  ASSERT_TRUE(step.row.success && step.fit);
+  const Eigen::Matrix2Xd searched = projectState(model, scene.camera, step.fit->state);
+  FitResult again = *step.fit;
+  for (const int lobe : {kLeftLobe, kRightLobe}) again.points.col(lobe) = searched.col(lobe);
+  placeUnrefinedLandmarks(model, scene.camera, again);
+  for (const int lobe : {kLeftLobe, kRightLobe}) {
+    EXPECT_LT((step.row.points.col(lobe) - again.points.col(lobe)).norm(), 1e-9) << lobe;
+    EXPECT_GT((step.row.points.col(lobe) - searched.col(lobe)).norm(), 0.5) << lobe;
+  }
 }
 
 TEST(ImageFitRefiner, TheChecksProbabilityIsTheFitsConfidence) {
