@@ -81,6 +81,16 @@ FitState stateNearPoints(const ClmModel& model, const Camera& camera,
                          const Eigen::Matrix2Xd& points, const std::vector<bool>& present,
                          const FitState& start, const PointsFitSettings& settings = {});
 
+// The settings of stateNearPoints from a search's own state, which is near already (the tracker's
+// carried state, a fit's outline placed on its refined points): a few Levenberg-Marquardt steps,
+// not the 60 a start from nothing is allowed (each a Jacobian and a small solve, a few hundredths
+// of a millisecond).
+inline PointsFitSettings nearbyPointsFit() {
+  PointsFitSettings settings;
+  settings.maxIterations = 10;
+  return settings;
+}
+
 // Every landmark of `state` projected to input pixels (2 x the scheme's landmark count).
 Eigen::Matrix2Xd projectState(const ClmModel& model, const Camera& camera, const FitState& state);
 

@@ -131,12 +131,9 @@ TrackFailure Tracker::judge(const FitResult& fit) const {
 
 FitState Tracker::carriedState(const FitResult& fit) const {
   if (!fit.refined) return fit.state;  // the search's own points: its own state
-  // The search's state is near already: a few Levenberg-Marquardt steps, not the 60 a start from
-  // nothing is allowed (each is a Jacobian and a small solve, a few hundredths of a millisecond).
-  PointsFitSettings nearby;
-  nearby.maxIterations = 10;
   try {
-    return stateNearPoints(*model_, camera_, fit.points, fit.modelled, fit.state, nearby);
+    return stateNearPoints(*model_, camera_, fit.points, fit.modelled, fit.state,
+                           nearbyPointsFit());
   } catch (const InputError&) {
     return fit.state;  // too few modelled points to place the model: keep the search's state
   }

@@ -15,13 +15,9 @@ void placeUnrefinedLandmarks(const ClmModel& model, const Camera& camera, FitRes
       refined[static_cast<std::size_t>(landmark)] = true;
     }
   }
-  // The search's state is near already: a few Levenberg-Marquardt steps, as the tracker takes to
-  // carry a frame's refined points on.
-  PointsFitSettings nearby;
-  nearby.maxIterations = 10;
   FitState near;
   try {
-    near = stateNearPoints(model, camera, fit.points, refined, fit.state, nearby);
+    near = stateNearPoints(model, camera, fit.points, refined, fit.state, nearbyPointsFit());
   } catch (const InputError&) {
     return;  // too few refined points to place the model: the search's points stand
   }
