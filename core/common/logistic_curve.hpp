@@ -22,6 +22,9 @@ struct LogisticFitSettings {
   int maxIterations = 50;
 };
 
+// log(p / (1 - p)), p clamped to [1e-12, 1 - 1e-12] so that a certain 0 or 1 stays finite.
+double logOdds(double probability);
+
 // Newton's method from slope 1, offset 0. With fewer than one score of each label the start is
 // returned.
 LogisticCurve fitLogisticCurve(const std::vector<double>& scores, const std::vector<bool>& labels,

@@ -49,6 +49,26 @@ TEST(LogisticCurve, BalancedClassesDoNotFollowTheSampleRatio) {
   EXPECT_GT(even(0.8), plain(0.8));
 }
 
+// Scores far from 0 (the log-odds of near-certain probabilities, as `clm3d calibrate` fits them):
+// Newton's full step from slope 1 overshot to slopes of 1e5 here; halved until the likelihood
+// rises, it lands on the curve the labels say.
+TEST(LogisticCurve, ScoresFarFromZeroStillGiveTheLabelsShare) {
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int k = 0; k < 60; ++k) {
+    scores.push_back(20.0 + 0.01 * k);
+    labels.push_back(k % 2 == 0);  // half right
+  }
+  for (int k = 0; k < 40; ++k) {
+    scores.push_back(-5.0 - 0.01 * k);
+    labels.push_back(false);
+  }
+  const LogisticCurve curve = fitLogisticCurve(scores, labels);
+  ASSERT_TRUE(std::isfinite(curve.slope) && std::isfinite(curve.offset));
+  EXPECT_NEAR(curve(20.3), 0.5, 0.05);
+  EXPECT_LT(curve(-5.2), 0.05);
+}
+
 TEST(LogisticCurve, OneClassOnlyGivesTheStart) {
   const LogisticCurve curve = fitLogisticCurve({0.1, 0.2, 0.3}, {true, true, true});
   EXPECT_EQ(curve.slope, 1.0);
