@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   clm3d::cli::addPlotCommand(app);
   clm3d::cli::addDetectCommand(app);
   clm3d::cli::addBatchCommand(app);
+  clm3d::cli::addCalibrateCommand(app);
 
   try {
     app.parse(argc, argv);

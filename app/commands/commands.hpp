@@ -26,5 +26,6 @@ void addEvalPointsCommand(CLI::App& root);
 void addPlotCommand(CLI::App& root);
 void addDetectCommand(CLI::App& root);
 void addBatchCommand(CLI::App& root);
+void addCalibrateCommand(CLI::App& root);
 
 }  // namespace clm3d::cli

@@ -27,6 +27,8 @@ const char* toString(ProbabilitySource source) {
       return "view calibration";
     case ProbabilitySource::BuiltInNccCurve:
       return "built-in NCC curve";
+    case ProbabilitySource::PhotoFitCurve:
+      return "check on photo fits";
     case ProbabilitySource::BuiltInExpertCurve:
       break;
   }
@@ -51,9 +53,8 @@ FitProbability searchProbability(const ClmModel& model, int view, bool experts, 
 }
 
 double builtInScoreAt(bool experts, double probability) {
-  const double p = std::clamp(probability, 1e-12, 1.0 - 1e-12);
   const LogisticCurve curve = builtInScoreCurve(experts);
-  return (std::log(p / (1.0 - p)) - curve.offset) / curve.slope;
+  return (logOdds(probability) - curve.offset) / curve.slope;
 }
 
 }  // namespace clm3d

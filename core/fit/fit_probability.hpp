@@ -21,8 +21,11 @@ enum class ProbabilitySource {
   ViewCalibration,     // the view's curve of the experts' response (rlms; trained with photos)
   BuiltInNccCurve,     // no calibration in the model: the built-in curve of the mean NCC
   BuiltInExpertCurve,  // the same for the experts' mean response (rlms)
+  PhotoFitCurve,       // a photo's fit: the check through the model's photo-fit curve of the view
+                       // (`clm3d calibrate`, core/model/descent_refiner.hpp)
 };
-// "check", "view check", "view calibration", "built-in NCC curve", "built-in experts' curve".
+// "check", "view check", "view calibration", "built-in NCC curve", "built-in experts' curve",
+// "check on photo fits".
 const char* toString(ProbabilitySource source);
 
 // Whether probabilities from `source` compare fits in different views: those of the views' own

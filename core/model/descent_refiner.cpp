@@ -51,6 +51,11 @@ void DescentCheck::validate(Eigen::Index points) const {
   if (!featureMean.allFinite() || !weights.allFinite() || !std::isfinite(bias) ||
       !std::isfinite(slope) || !std::isfinite(offset))
     throw Error("check: values not finite");
+  for (const PhotoFitCurve& curve : photoFitCurves) {
+    if (!(curve.viewYawDeg >= 0.0 && curve.viewYawDeg <= 180.0) || !std::isfinite(curve.slope) ||
+        !std::isfinite(curve.offset))
+      throw Error("check.photoFitCurves: a view's |yaw| in [0, 180] and finite curves");
+  }
 }
 
 }  // namespace clm3d

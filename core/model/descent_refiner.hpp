@@ -24,6 +24,17 @@ struct DescentStage {
   Eigen::MatrixXf shapeWeights;
 };
 
+// The check's probability turned into the probability that a photo's whole fit (detection, face
+// loop, search, refinement: `clm3d fit`, `clm3d batch`) is right, for the fits in the views of one
+// |yaw|: a logistic curve of the check's log-odds, learnt by `clm3d calibrate` from that pipeline's
+// own fits of annotated photos (model format 9). The check learns from refined starts around the
+// truth of near-frontal photos and is too sure of the pipeline's fits of turned faces: on 1,185
+// AFLW training faces it accepted 146 of the 297 fits off the face at |yaw| 60-90.
+struct PhotoFitCurve {
+  double viewYawDeg = 0.0;  // |yaw| of the views it judges (a view and its mirror image alike)
+  double slope = 1.0, offset = 0.0;  // p = 1 / (1 + exp(-(slope * log(c / (1 - c)) + offset)))
+};
+
 // A linear score of the features at the refined points, turned into the probability that the
 // points are right (their mean error under a fixed share of the eye distance) by a logistic curve
 // fitted to the training scores: p = 1 / (1 + exp(-(slope * score + offset))).
@@ -33,6 +44,9 @@ struct DescentCheck {
   Eigen::VectorXf weights;      // one per feature
   double bias = 0.0;
   double slope = 1.0, offset = 0.0;
+  // The refiner's check only: a photo fit's probability per |yaw| of its view (PhotoFitCurve);
+  // empty: the check's own probability judges photos (models before format 9, uncalibrated ones).
+  std::vector<PhotoFitCurve> photoFitCurves;
 
   bool empty() const { return weights.size() == 0; }
   // Throws Error naming the first inconsistency for a check of `points` points (sizes, window,

@@ -27,6 +27,7 @@ constexpr std::uint64_t kMaxValues = 100'000'000;
 constexpr std::int64_t kMaxPoints = 10'000;
 constexpr std::int64_t kMaxViews = 1'000;
 constexpr std::int64_t kMaxScales = 16;
+constexpr std::size_t kMaxPhotoFitCurves = 64;
 constexpr std::int64_t kMaxPatchSize = 1'024;
 constexpr std::int64_t kMaxExpertUnits = 64;
 constexpr std::size_t kMaxFrames = 10'000'000;  // an adapted model's frames
@@ -223,6 +224,13 @@ json refinerJson(const DescentRefiner& refiner) {
                     {"bias", check.bias},
                     {"slope", check.slope},
                     {"offset", check.offset}};
+    // Version 9: [|yaw|, slope, offset] per curve; absent when the check has none.
+    if (!check.photoFitCurves.empty()) {
+      json curves = json::array();
+      for (const PhotoFitCurve& curve : check.photoFitCurves)
+        curves.push_back({curve.viewYawDeg, curve.slope, curve.offset});
+      out["check"]["photoFitCurves"] = curves;
+    }
   }
   return out;
 }
@@ -331,6 +339,17 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       out.bias = number(check, "bias");
       out.slope = number(check, "slope");
       out.offset = number(check, "offset");
+      if (version >= 9 && check.has("photoFitCurves")) {
+        for (const Header& curve : array(check, "photoFitCurves", kMaxPhotoFitCurves)) {
+          if (!curve.is_array() || curve.size() != 3 ||
+              !std::all_of(curve.begin(), curve.end(),
+                           [](const Header& value) { return value.is_number(); })) {
+            fieldError(check.name("photoFitCurves"), "entries must be [|yaw|, slope, offset]");
+          }
+          out.photoFitCurves.push_back(
+              {curve[0].get<double>(), curve[1].get<double>(), curve[2].get<double>()});
+        }
+      }
       check.rejectUnknown();
       addValues(floats, d, 2, check.path());
       out.weights.resize(1);  // marks the check present; sized once the byte count is checked

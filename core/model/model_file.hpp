@@ -23,8 +23,9 @@ namespace clm3d {
 // 7: the views' optional calibration curves and "refined" flags.
 // 8: the stored views' optional checks (a view's "check"; its arrays after the refiner's) and the
 //    provenance's optional "adaptedFrom" (an adapted model's general model, video, frames).
-// Version 1 files (no experts, every view stored) and versions 2 to 7 still load.
-inline constexpr std::uint32_t kModelFormatVersion = 8;
+// 9: the refiner check's optional photo-fit curves (check "photoFitCurves", `clm3d calibrate`).
+// Version 1 files (no experts, every view stored) and versions 2 to 8 still load.
+inline constexpr std::uint32_t kModelFormatVersion = 9;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

@@ -88,6 +88,12 @@ std::string describeModelFile(const std::filesystem::path& path) {
               : "the built-in curves of the search's score (the model carries no calibration: "
                 "a mean NCC of 0.35 or an expert response of 0.45 is 0.5)")
       << "\n";
+  if (const auto& curves = model.refiner.check.photoFitCurves; !curves.empty()) {
+    out << "photo fits: the check through the curves clm3d calibrate learnt from photo fits, for "
+           "views of |yaw|";
+    for (const PhotoFitCurve& curve : curves) out << " " << curve.viewYawDeg;
+    out << "\n";
+  }
   const ModelProvenance& p = model.provenance;
   out << "trained from: " << (p.dataset.empty() ? "(unknown)" : p.dataset) << "\n"
       << "created: " << p.created << " by clm3d " << p.toolVersion << ", seed " << p.seed << "\n";

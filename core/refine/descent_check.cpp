@@ -32,6 +32,16 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
   return checkProbability(check, features);
 }
 
+double photoFitProbability(const DescentCheck& check, double checkProbability, double viewYawDeg) {
+  if (check.photoFitCurves.empty() || !std::isfinite(checkProbability)) return checkProbability;
+  const double yaw = std::abs(viewYawDeg);
+  const PhotoFitCurve* nearest = &check.photoFitCurves.front();
+  for (const PhotoFitCurve& curve : check.photoFitCurves) {
+    if (std::abs(curve.viewYawDeg - yaw) < std::abs(nearest->viewYawDeg - yaw)) nearest = &curve;
+  }
+  return LogisticCurve{nearest->slope, nearest->offset}(logOdds(checkProbability));
+}
+
 double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features) {
   const double score = check.weights.dot(features - check.featureMean) + check.bias;
   return LogisticCurve{check.slope, check.offset}(score);

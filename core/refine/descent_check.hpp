@@ -27,6 +27,12 @@ namespace clm3d {
 double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                      const Eigen::Matrix2Xd& points);
 
+// The probability that a photo's fit in a view of yaw `viewYawDeg` is right, from its check
+// probability `checkProbability`: the photo-fit curve (PhotoFitCurve, core/model/
+// descent_refiner.hpp) of the nearest |yaw| applied to its log-odds; `checkProbability` itself
+// when the check has no curves or it is not finite.
+double photoFitProbability(const DescentCheck& check, double checkProbability, double viewYawDeg);
+
 // The probability `check` gives to `features` (as descentFeatures gives them).
 double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features);
 

@@ -20,6 +20,7 @@
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/detect/start_search.hpp"
+#include "core/refine/descent_check.hpp"
 #include "core/refine/refined_fit.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/detail/unrefined_landmarks.hpp"
@@ -99,6 +100,14 @@ ImageFitter::ImageFitter(const ClmModel& model, const ImageFitSettings& settings
 
 ImageFitter::~ImageFitter() = default;
 
+double ImageFitter::photoProbability(const FitResult& fit) const {
+  if (fit.probabilitySource != ProbabilitySource::Check || fit.view < 0 ||
+      fit.view >= static_cast<int>(model_->views.size()))
+    return fit.probability;
+  return photoFitProbability(model_->refiner.check, fit.probability,
+                             model_->views[static_cast<std::size_t>(fit.view)].yawDeg);
+}
+
 FaceDetector& ImageFitter::detector() {
   if (!detector_) detector_ = std::make_unique<FaceDetector>(settings_.detector);
   return *detector_;
@@ -148,9 +157,12 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     if (settings_.refine) {
       finish = [this](FitResult& fit) { refineFit(*model_, lastImage_, fit); };
     }
-    // The one probability judges a photo's fit as it judges a tracked frame.
+    // The one probability judges a photo's fit as it judges a tracked frame; a model calibrated on
+    // photo fits (`clm3d calibrate`) judges by its curve of the fit's view. The search's own
+    // choices (the start grid, the wider search, the refiner runs) keep the check's scale they
+    // were chosen on.
     const auto passes = [this](const FitResult& result) {
-      return result.probability >= settings_.minProbability;
+      return photoProbability(result) >= settings_.minProbability;
     };
     FitResult fit;
     double turnedMilliseconds = 0.0;  // detection in turned copies, inside the search
@@ -194,6 +206,10 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     }
     // A start from marked points brought its outline with it; a box brought none.
     if (startPoints.empty()) placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
+    if (const double p = photoProbability(fit); p != fit.probability) {
+      fit.probability = p;
+      fit.probabilitySource = ProbabilitySource::PhotoFitCurve;
+    }
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];

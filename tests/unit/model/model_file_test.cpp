@@ -420,6 +420,29 @@ TEST(ModelFile, RefinerCheckRoundTrips) {
   EXPECT_TRUE(old.refiner.check.empty());
 }
 
+// Version 9: the check's photo-fit curves (`clm3d calibrate`) are stored in its header entry and
+// read back exactly; a check without them writes no "photoFitCurves" key, and a malformed entry or
+// a |yaw| out of range is refused naming the field.
+TEST(ModelFile, PhotoFitCurvesRoundTrip) {
+  ClmModel model = tinyModelWithRefiner();
+  DescentCheck& check = model.refiner.check;
+  const Eigen::Index d = 3 * kDescentFeaturesPerPoint;
+  check.featureMean = Eigen::VectorXf::Zero(d);
+  check.weights = Eigen::VectorXf::Ones(d);
+  EXPECT_EQ(headerOf(serializeModel(model)).find("photoFitCurves"), std::string::npos);
+  check.photoFitCurves = {{0.0, 0.875, -2.5}, {30.0, 0.625, -1.4375}, {60.0, 0.5, -1.75}};
+  const std::string bytes = serializeModel(model);
+  const ClmModel loaded = parseModel(bytes, "m.clm3d");
+  EXPECT_EQ(serializeModel(loaded), bytes);
+  ASSERT_EQ(loaded.refiner.check.photoFitCurves.size(), 3u);
+  EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].viewYawDeg, 30.0);
+  EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].slope, 0.625);
+  EXPECT_EQ(loaded.refiner.check.photoFitCurves[2].offset, -1.75);
+  expectEditsRefused(bytes, "photoFitCurves",
+                     {{"[60.0,0.5,-1.75]", "[60.0,0.5]", "photoFitCurves"},
+                      {"[60.0,0.5,-1.75]", "[260.0,0.5,-1.75]", "photoFitCurves"}});
+}
+
 // Version 6: the stages' shape weights are stored after each stage's bias and read back exactly;
 // a refiner without them writes no "shapeWeights" key, and a version 5 file (the fuzz corpus's
 // tiny-check-v5.clm3d) loads with stages that have none.

@@ -16,6 +16,7 @@
 
 #include "core/detect/initialisation.hpp"
 #include "core/detect/start_search.hpp"
+#include "core/refine/descent_check.hpp"
 #include "core/refine/descent_refinement.hpp"
 #include "core/refine/refined_fit.hpp"
 #include "core/refine/view_check.hpp"
@@ -335,6 +336,52 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
   EXPECT_EQ(kept.status, ImageFitStatus::Rejected);
   EXPECT_TRUE(fs::exists(dir / "c.pts"));
   EXPECT_EQ(kept.output, dir / "c.pts");
+}
+
+// A model calibrated on photo fits (`clm3d calibrate`) judges a photo's fit by the curve of its
+// view's |yaw| applied to the check's log-odds (the nearest |yaw| when its own has none): the same
+// fit, the known check's 0.8, is rejected under a curve that makes it 0.35 and kept under one that
+// makes it 0.92, and its probability and source say so. The tracker's frames keep the check's.
+TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
+  DescentCheck check;
+  EXPECT_EQ(photoFitProbability(check, 0.8, 10.0), 0.8);  // no curves: the check's own
+  check.photoFitCurves = {{0.0, 1.0, -2.0}, {60.0, 1.0, 1.0}};
+  const double logOddsOf08 = std::log(0.8 / 0.2);
+  EXPECT_NEAR(photoFitProbability(check, 0.8, -20.0), 1.0 / (1.0 + std::exp(-(logOddsOf08 - 2.0))),
+              1e-12);
+  EXPECT_NEAR(photoFitProbability(check, 0.8, 50.0), 1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))),
+              1e-12);
+  EXPECT_TRUE(std::isnan(photoFitProbability(check, std::nan(""), 0.0)));
+
+  ClmModel model = fitTestModel();
+  model.refiner = knownRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead, 70.0);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  const auto fitWithCurve = [&](double offset) {
+    ClmModel calibrated = model;
+    calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, offset}};
+    ImageFitSettings settings;
+    settings.tiltSteps = 0;
+    return ImageFitter(calibrated, settings).fitFile(dir / "face.png");
+  };
+  const ImageFitOutcome doubted = fitWithCurve(-2.0);
+  EXPECT_EQ(doubted.status, ImageFitStatus::Rejected) << doubted.message;
+  ASSERT_TRUE(doubted.fit);
+  EXPECT_EQ(doubted.fit->probabilitySource, ProbabilitySource::PhotoFitCurve);
+  EXPECT_NEAR(doubted.fit->probability, 1.0 / (1.0 + std::exp(-(logOddsOf08 - 2.0))), 1e-6);
+  const ImageFitOutcome trusted = fitWithCurve(1.0);
+  EXPECT_EQ(trusted.status, ImageFitStatus::Ok) << trusted.message;
+  ASSERT_TRUE(trusted.fit);
+  EXPECT_NEAR(trusted.fit->probability, 1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))), 1e-6);
+
+  ClmModel calibrated = model;
+  calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -2.0}};
+  Tracker tracker(calibrated, scene.camera, TrackerSettings{});
+  tracker.setState(scene.truth, -1);
+  const TrackStep frame = tracker.track(scene.image, 0, 0.0);
+  ASSERT_TRUE(frame.row.success) << toString(frame.failure);
+  EXPECT_NEAR(frame.row.confidence, kKnownCheckProbability, 1e-6);
 }
 
 // A head tilted 40 degrees: the detectors find no upright face (or none whose fit passes the

@@ -1,0 +1,157 @@
+#include "core/eval/photo_fit_calibration.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+
+#include "core/common/error.hpp"
+#include "core/common/logistic_curve.hpp"
+#include "core/common/parallel_for.hpp"
+#include "core/eval/detail/scored_truth.hpp"
+#include "core/refine/descent_check.hpp"
+
+namespace clm3d {
+namespace {
+
+// One photo's fit as the calibration sees it.
+struct JudgedFit {
+  bool judged = false;  // the check gave the probability
+  double viewYawDeg = 0.0;
+  double logOdds = 0.0;
+  bool right = false;
+};
+
+// The error over the face box of `points` (every scheme landmark) against `truth`'s points.
+double boxError(const Eigen::Matrix2Xd& points, const ScoredTruth& truth) {
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < truth.points.size() && i < points.cols(); ++i) {
+    if (!truth.points.has(i) || !points.col(i).allFinite()) continue;
+    sum += (points.col(i) - truth.points.point(i).head<2>()).norm();
+    ++count;
+  }
+  return count > 0 ? sum / count / truth.boxSize : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Curves from `fits` (those `use` selects), per |yaw| with enough of both kinds.
+std::vector<PhotoFitCurve> learnCurves(const std::vector<JudgedFit>& fits,
+                                       const std::function<bool(std::size_t)>& use, int minEach) {
+  std::map<double, std::pair<std::vector<double>, std::vector<bool>>> byYaw;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    if (!fits[i].judged || !use(i)) continue;
+    auto& [scores, labels] = byYaw[fits[i].viewYawDeg];
+    scores.push_back(fits[i].logOdds);
+    labels.push_back(fits[i].right);
+  }
+  std::vector<PhotoFitCurve> curves;
+  for (const auto& [yaw, sample] : byYaw) {
+    const auto right = std::count(sample.second.begin(), sample.second.end(), true);
+    const auto wrong = static_cast<long>(sample.second.size()) - right;
+    if (right < minEach || wrong < minEach) continue;
+    const LogisticCurve curve = fitLogisticCurve(sample.first, sample.second);
+    curves.push_back({yaw, curve.slope, curve.offset});
+  }
+  return curves;
+}
+
+}  // namespace
+
+PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
+                                       const std::vector<std::filesystem::path>& images,
+                                       const std::vector<std::filesystem::path>& truths,
+                                       const PhotoFitCalibrationSettings& settings,
+                                       const ProgressCallback& progress,
+                                       const CancelToken* cancel) {
+  if (model.refiner.check.empty())
+    throw InputError("calibrate: the model has no point check to calibrate (train it with photos)");
+  if (images.size() != truths.size())
+    throw InputError("calibrate: one truth file per image is needed");
+  ClmModel uncalibrated = model;  // the pipeline as the check alone judges it
+  uncalibrated.refiner.check.photoFitCurves.clear();
+  const Scheme scheme = model.scheme();
+  std::vector<ScoredTruth> scored;
+  scored.reserve(truths.size());
+  for (const std::filesystem::path& truth : truths)
+    scored.push_back(readScoredTruth(truth, scheme));
+
+  PhotoFitCalibrationSettings how = settings;
+  how.fit.keepRejected = true;
+  const int count = static_cast<int>(images.size());
+  const int workers = workerCount(count, settings.threads);
+  std::vector<JudgedFit> fits(images.size());
+  std::vector<unsigned char> fitted(images.size(), 0);
+  std::atomic<int> done{0};
+  // One ImageFitter per worker (it is not thread-safe), each taking every workers-th photo.
+  parallelFor(
+      workers, workers,
+      [&](int worker) {
+        ImageFitter fitter(uncalibrated, how.fit);
+        for (int i = worker; i < count; i += workers) {
+          if (cancel != nullptr && cancel->cancelled()) return;
+          const ImageFitOutcome outcome = fitter.fitFile(images[static_cast<std::size_t>(i)]);
+          const auto slot = static_cast<std::size_t>(i);
+          if (outcome.fit) {
+            fitted[slot] = 1;
+            const FitResult& fit = *outcome.fit;
+            const double error = boxError(fit.points, scored[slot]);
+            if (fit.probabilitySource == ProbabilitySource::Check && std::isfinite(error) &&
+                fit.view >= 0 && fit.view < static_cast<int>(model.views.size())) {
+              fits[slot] = {true, std::abs(model.views[static_cast<std::size_t>(fit.view)].yawDeg),
+                            logOdds(fit.probability), error <= settings.rightBelow};
+            }
+          }
+          const int finished = ++done;
+          if (progress && worker == 0)
+            progress(static_cast<double>(finished) / count, "photo fits");
+        }
+      },
+      cancel);
+  if (cancel != nullptr && cancel->cancelled()) throw Cancelled();
+
+  PhotoFitCalibration out;
+  out.photos = count;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    out.judged += fits[i].judged ? 1 : 0;
+    out.noFace += fitted[i] ? 0 : 1;
+  }
+  out.curves = learnCurves(
+      fits, [](std::size_t) { return true; }, settings.minEach);
+  if (out.curves.empty())
+    throw InputError("calibrate: no view's |yaw| had " + std::to_string(settings.minEach) +
+                     " right and " + std::to_string(settings.minEach) +
+                     " wrong fits to learn a curve from (" + std::to_string(out.judged) +
+                     " fits judged by the check): give more photos, at more poses");
+  // Held out: each half judged by the curves of the other.
+  std::array<DescentCheck, 2> halves;
+  for (std::size_t half = 0; half < 2; ++half) {
+    halves[half].photoFitCurves = learnCurves(
+        fits, [half](std::size_t i) { return i % 2 != half; }, settings.minEach);
+  }
+  const double threshold = settings.fit.minProbability;
+  std::map<double, PhotoFitCalibrationRow> rows;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    const JudgedFit& fit = fits[i];
+    if (!fit.judged) continue;
+    PhotoFitCalibrationRow& row = rows[fit.viewYawDeg];
+    row.viewYawDeg = fit.viewYawDeg;
+    const double before = LogisticCurve{}(fit.logOdds);
+    const double heldOut = photoFitProbability(halves[i % 2], before, fit.viewYawDeg);
+    (fit.right ? row.right : row.wrong) += 1;
+    if (fit.right) {
+      row.rightKeptBefore += before >= threshold ? 1 : 0;
+      row.rightKeptHeldOut += heldOut >= threshold ? 1 : 0;
+    } else {
+      row.wrongAcceptedBefore += before >= threshold ? 1 : 0;
+      row.wrongAcceptedHeldOut += heldOut >= threshold ? 1 : 0;
+    }
+  }
+  for (auto& [yaw, row] : rows) {
+    row.curve = std::any_of(out.curves.begin(), out.curves.end(),
+                            [&](const PhotoFitCurve& curve) { return curve.viewYawDeg == yaw; });
+    out.rows.push_back(row);
+  }
+  return out;
+}
+
+}  // namespace clm3d
