@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/refine/descent_check.hpp"
 #include "core/refine/view_check.hpp"
 
 namespace clm3d {
@@ -27,6 +28,21 @@ void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
     fit.probability = refined.rightProbability;
     fit.probabilitySource = ProbabilitySource::Check;
   }
+}
+
+double photoFitProbability(const ClmModel& model, const FitResult& fit) {
+  if (fit.probabilitySource != ProbabilitySource::Check || fit.view < 0 ||
+      fit.view >= static_cast<int>(model.views.size()))
+    return fit.probability;
+  return photoFitProbability(model.refiner.check, fit.probability,
+                             model.views[static_cast<std::size_t>(fit.view)].yawDeg);
+}
+
+void judgeAsPhotoFit(const ClmModel& model, FitResult& fit) {
+  const double p = photoFitProbability(model, fit);
+  if (p == fit.probability) return;
+  fit.probability = p;
+  fit.probabilitySource = ProbabilitySource::PhotoFitCurve;
 }
 
 }  // namespace clm3d

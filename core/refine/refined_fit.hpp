@@ -21,4 +21,14 @@ namespace clm3d {
 void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
                const RefinerStarts& starts = {});
 
+// The probability that judges `fit` as a photo's (`clm3d fit`, `clm3d batch`): the check's through
+// the model's photo-fit curve of the fit's view (photoFitProbability,
+// core/refine/descent_check.hpp) when the fit's probability is the check's and the model has
+// curves; else fit.probability.
+double photoFitProbability(const ClmModel& model, const FitResult& fit);
+
+// `fit` judged as a photo's: its probability set to photoFitProbability and its source to
+// ProbabilitySource::PhotoFitCurve when that differs from its own.
+void judgeAsPhotoFit(const ClmModel& model, FitResult& fit);
+
 }  // namespace clm3d

@@ -20,7 +20,6 @@
 #include "core/common/split_mix_random.hpp"
 #include "core/detect/initialisation.hpp"
 #include "core/detect/start_search.hpp"
-#include "core/refine/descent_check.hpp"
 #include "core/refine/refined_fit.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "core/track/detail/unrefined_landmarks.hpp"
@@ -100,14 +99,6 @@ ImageFitter::ImageFitter(const ClmModel& model, const ImageFitSettings& settings
 
 ImageFitter::~ImageFitter() = default;
 
-double ImageFitter::photoProbability(const FitResult& fit) const {
-  if (fit.probabilitySource != ProbabilitySource::Check || fit.view < 0 ||
-      fit.view >= static_cast<int>(model_->views.size()))
-    return fit.probability;
-  return photoFitProbability(model_->refiner.check, fit.probability,
-                             model_->views[static_cast<std::size_t>(fit.view)].yawDeg);
-}
-
 FaceDetector& ImageFitter::detector() {
   if (!detector_) detector_ = std::make_unique<FaceDetector>(settings_.detector);
   return *detector_;
@@ -162,7 +153,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     // choices (the start grid, the wider search, the refiner runs) keep the check's scale they
     // were chosen on.
     const auto passes = [this](const FitResult& result) {
-      return photoProbability(result) >= settings_.minProbability;
+      return photoFitProbability(*model_, result) >= settings_.minProbability;
     };
     FitResult fit;
     double turnedMilliseconds = 0.0;  // detection in turned copies, inside the search
@@ -206,10 +197,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     }
     // A start from marked points brought its outline with it; a box brought none.
     if (startPoints.empty()) placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
-    if (const double p = photoProbability(fit); p != fit.probability) {
-      fit.probability = p;
-      fit.probabilitySource = ProbabilitySource::PhotoFitCurve;
-    }
+    judgeAsPhotoFit(*model_, fit);
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];

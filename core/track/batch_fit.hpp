@@ -103,9 +103,6 @@ class ImageFitter {
  private:
   FaceDetector& detector();
   Fitter& fitterFor(const cv::Mat& image);
-  // The probability that judges `fit` as a photo's: the check's through the model's photo-fit
-  // curve of its view (photoFitProbability) when it has one, else fit.probability.
-  double photoProbability(const FitResult& fit) const;
 
   const ClmModel* model_;
   ImageFitSettings settings_;
