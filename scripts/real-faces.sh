@@ -14,7 +14,8 @@
 # TURNED (5), TRAIN_OPTIONS and TRACK_OPTIONS (extra options of clm3d train and of every
 # clm3d track, e.g. "--calibrate-views" and "--view-search 0" for the A/B of
 # docs/fitting.md#views-on-one-scale; use a fresh OUT for each).
-# The model trained here inherits LFPW's research-only terms: it is written to OUT, never committed.
+# The model trained here inherits LFPW's and AFLW's research-only terms: it is written to OUT, never
+# committed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 OUT=${1:-real-faces-out}
@@ -28,11 +29,25 @@ TEST=$DATA/photos/lfpw/test
 mkdir -p "$OUT"/{starts,fits,peer,sequences,tracks,logs}
 [[ -d $TEST ]] || { echo "real-faces: no LFPW test photos in $TEST" >&2; exit 1; }
 
-# 1. The model: both scans, MakeHuman, ICT, procedural heads and the 805 LFPW training photos.
+# 1. The model: both scans, MakeHuman, ICT, procedural heads, the 805 LFPW training photos and
+# AFLW's training faces; then its check calibrated on photo fits (clm3d calibrate) of every 7th
+# AFLW training face (1,227), when AFLW is there.
+TRAINED=$OUT/real-trained.clm3d
 MODEL=$OUT/real.clm3d
-if [[ ! -f $MODEL ]]; then
+if [[ ! -f $TRAINED ]]; then
   /usr/bin/time -f "train: %e s wall, %M KB peak" "$CLM3D" train --dataset resources/datasets/real.json \
-    --out "$MODEL" --texture-max-modes 16 ${TRAIN_OPTIONS:-} 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
+    --out "$TRAINED" --texture-max-modes 16 ${TRAIN_OPTIONS:-} 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
+fi
+if [[ ! -f $MODEL ]]; then
+  AFLW_TRAIN=$DATA/photos/aflw21/train.txt
+  if [[ -f $AFLW_TRAIN ]]; then
+    awk -v dir="$DATA/photos/aflw21/" 'NR % 7 == 3 { print dir $0 }' "$AFLW_TRAIN" > "$OUT/calibration-photos.txt"
+    echo "== the check calibrated on photo fits ($(wc -l < "$OUT/calibration-photos.txt") AFLW training faces)"
+    "$CLM3D" calibrate --model "$TRAINED" --images "$OUT/calibration-photos.txt" --out "$MODEL" --quiet |
+      tee "$OUT/logs/calibrate.log"
+  else
+    cp "$TRAINED" "$MODEL"
+  fi
 fi
 
 # 2. Starts from the truth: the 5-point start (eye centres, nose tip, mouth corners).
