@@ -1,8 +1,11 @@
 #include "core/eval/photo_fit_calibration.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 
 #include "core/common/error.hpp"
