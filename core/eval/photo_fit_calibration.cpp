@@ -12,6 +12,7 @@
 #include "core/common/logistic_curve.hpp"
 #include "core/common/parallel_for.hpp"
 #include "core/eval/detail/scored_truth.hpp"
+#include "core/eval/point_set_error.hpp"
 #include "core/refine/descent_check.hpp"
 
 namespace clm3d {
@@ -25,16 +26,14 @@ struct JudgedFit {
   bool right = false;
 };
 
-// The error over the face box of `points` (every scheme landmark) against `truth`'s points.
-double boxError(const Eigen::Matrix2Xd& points, const ScoredTruth& truth) {
-  double sum = 0.0;
-  int count = 0;
-  for (int i = 0; i < truth.points.size() && i < points.cols(); ++i) {
-    if (!truth.points.has(i) || !points.col(i).allFinite()) continue;
-    sum += (points.col(i) - truth.points.point(i).head<2>()).norm();
-    ++count;
+// The error over the truth's face box of `points` (every scheme landmark, image pixels), as
+// `clm3d eval-points` scores it (scorePointSet over the truth's present points).
+double boxError(const Eigen::Matrix2Xd& points, const ScoredTruth& truth, const Scheme& scheme) {
+  LandmarkSet prediction(scheme.size(), 2);
+  for (int i = 0; i < scheme.size() && i < points.cols(); ++i) {
+    if (points.col(i).allFinite()) prediction.set(i, Eigen::Vector2d(points.col(i)));
   }
-  return count > 0 ? sum / count / truth.boxSize : std::numeric_limits<double>::quiet_NaN();
+  return scorePointSet(truth.points, truth.boxSize, prediction, scheme, {}).boxError;
 }
 
 // Curves from `fits` (those `use` selects), per |yaw| with enough of both kinds.
@@ -78,8 +77,6 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
   for (const std::filesystem::path& truth : truths)
     scored.push_back(readScoredTruth(truth, scheme));
 
-  PhotoFitCalibrationSettings how = settings;
-  how.fit.keepRejected = true;
   const int count = static_cast<int>(images.size());
   const int workers = workerCount(count, settings.threads);
   std::vector<JudgedFit> fits(images.size());
@@ -89,7 +86,7 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
   parallelFor(
       workers, workers,
       [&](int worker) {
-        ImageFitter fitter(uncalibrated, how.fit);
+        ImageFitter fitter(uncalibrated, settings.fit);
         for (int i = worker; i < count; i += workers) {
           if (cancel != nullptr && cancel->cancelled()) return;
           const ImageFitOutcome outcome = fitter.fitFile(images[static_cast<std::size_t>(i)]);
@@ -97,7 +94,7 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
           if (outcome.fit) {
             fitted[slot] = 1;
             const FitResult& fit = *outcome.fit;
-            const double error = boxError(fit.points, scored[slot]);
+            const double error = boxError(fit.points, scored[slot], scheme);
             if (fit.probabilitySource == ProbabilitySource::Check && std::isfinite(error) &&
                 fit.view >= 0 && fit.view < static_cast<int>(model.views.size())) {
               fits[slot] = {true, std::abs(model.views[static_cast<std::size_t>(fit.view)].yawDeg),

@@ -29,7 +29,7 @@ struct DescentStage {
 // |yaw|: a logistic curve of the check's log-odds, learnt by `clm3d calibrate` from that pipeline's
 // own fits of annotated photos (model format 9). The check learns from refined starts around the
 // truth of near-frontal photos and is too sure of the pipeline's fits of turned faces: on 1,185
-// AFLW training faces it accepted 146 of the 297 fits off the face at |yaw| 60-90.
+// AFLW training faces it accepted 82 of the 179 fits off the face in the +-60 views.
 struct PhotoFitCurve {
   double viewYawDeg = 0.0;  // |yaw| of the views it judges (a view and its mirror image alike)
   double slope = 1.0, offset = 0.0;  // p = 1 / (1 + exp(-(slope * log(c / (1 - c)) + offset)))
