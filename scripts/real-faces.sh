@@ -30,24 +30,13 @@ mkdir -p "$OUT"/{starts,fits,peer,sequences,tracks,logs}
 [[ -d $TEST ]] || { echo "real-faces: no LFPW test photos in $TEST" >&2; exit 1; }
 
 # 1. The model: both scans, MakeHuman, ICT, procedural heads, the 805 LFPW training photos and
-# AFLW's training faces; then its check calibrated on photo fits (clm3d calibrate) of every 7th
-# AFLW training face (1,227), when AFLW is there.
-TRAINED=$OUT/real-trained.clm3d
+# AFLW's training faces; `clm3d train` then calibrates its check on the photo pipeline's fits of
+# every 7th AFLW training face (1,227; the manifest's calibration_photos).
 MODEL=$OUT/real.clm3d
-if [[ ! -f $TRAINED ]]; then
-  /usr/bin/time -f "train: %e s wall, %M KB peak" "$CLM3D" train --dataset resources/datasets/real.json \
-    --out "$TRAINED" --texture-max-modes 16 ${TRAIN_OPTIONS:-} 2>&1 | tee "$OUT/logs/train.log" | grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s)"
-fi
 if [[ ! -f $MODEL ]]; then
-  AFLW_TRAIN=$DATA/photos/aflw21/train.txt
-  if [[ -f $AFLW_TRAIN ]]; then
-    awk -v dir="$DATA/photos/aflw21/" 'NR % 7 == 3 { print dir $0 }' "$AFLW_TRAIN" > "$OUT/calibration-photos.txt"
-    echo "== the check calibrated on photo fits ($(wc -l < "$OUT/calibration-photos.txt") AFLW training faces)"
-    "$CLM3D" calibrate --model "$TRAINED" --images "$OUT/calibration-photos.txt" --out "$MODEL" --quiet |
-      tee "$OUT/logs/calibrate.log"
-  else
-    cp "$TRAINED" "$MODEL"
-  fi
+  /usr/bin/time -f "train: %e s wall, %M KB peak" "$CLM3D" train --dataset resources/datasets/real.json \
+    --out "$MODEL" ${TRAIN_OPTIONS:-} 2>&1 | tee "$OUT/logs/train.log" |
+    grep -E "^(trained|train: [0-9]+ of|train: [0-9.]+ s|train: the point check|\||curve|train: warning)"
 fi
 
 # 2. Starts from the truth: the 5-point start (eye centres, nose tip, mouth corners).

@@ -1,6 +1,8 @@
 // clm3d train: trains a multi-view 3D CLM (or, with --single-view, the 2D baseline) from a
-// dataset manifest and writes the model file; optionally the report pictures. Ctrl-C cancels
-// cleanly: the model is written atomically at the very end, so no half-written file remains.
+// dataset manifest (and, when it names calibration photos, calibrates the point check on the photo
+// pipeline's fits of them) and writes the model file; optionally the report pictures. Ctrl-C
+// cancels cleanly: the model is written atomically at the very end, so no half-written file
+// remains.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -13,10 +15,10 @@
 #include "app/commands/interrupt_scope.hpp"
 #include "app/commands/option_cli.hpp"
 #include "core/common/error.hpp"
+#include "core/eval/calibrated_training.hpp"
 #include "core/model/model_file.hpp"
 #include "core/train/report.hpp"
 #include "core/train/train_options.hpp"
-#include "core/train/trainer.hpp"
 
 namespace clm3d::cli {
 namespace {
@@ -52,9 +54,11 @@ void runTrain(TrainArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   CliProgress progress(CliProgress::Style::Tenths, false, "train");
   try {
-    TrainingDetails details;
-    ClmModel model = trainFromManifest(args.dataset, args.settings, std::string(CLM3D_VERSION),
-                                       progress.callback(), &interrupt.token(), &details);
+    CalibratedTraining trained =
+        trainAndCalibrate(args.dataset, args.settings, std::string(CLM3D_VERSION),
+                          progress.callback(), &interrupt.token());
+    const ClmModel& model = trained.model;
+    const TrainingDetails& details = trained.details;
     const std::vector<PhotoPlacement>& placements = details.placements;
     if (!placements.empty()) {
       int used = 0;
@@ -77,6 +81,13 @@ void runTrain(TrainArgs& args) {
     }
     if (!details.calibration.empty()) {
       std::cerr << formatViewCalibration(model, details.calibration);
+    }
+    if (trained.calibration) {
+      std::cerr << "train: the point check calibrated on the photo pipeline's fits of "
+                << formatPhotoFitCalibration(*trained.calibration, trained.calibrationSettings);
+    } else if (!trained.calibrationSkipped.empty()) {
+      std::cerr << "train: warning: calibration_photos not used: " << trained.calibrationSkipped
+                << "; the model keeps the check's own probability\n";
     }
     interrupt.token().throwIfCancelled();
     std::cerr << "train: saving\n";

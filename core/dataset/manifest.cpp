@@ -215,6 +215,28 @@ PhotoSource parsePhotos(Fields& f) {
   return source;
 }
 
+CalibrationPhotos parseCalibrationPhotos(Fields& f) {
+  CalibrationPhotos photos;
+  const bool folder = f.has("folder");
+  if (folder == f.has("list")) f.fail(f.name("folder"), "give exactly one of folder and list");
+  if (folder) {
+    photos.folder = f.path("folder", /*directoryAllowed=*/true);
+    if (!fs::is_directory(photos.folder)) {
+      f.fail(f.name("folder"), "not a folder: " + photos.folder.string());
+    }
+  } else {
+    photos.list = f.path("list");
+  }
+  photos.every = static_cast<int>(f.integer("every", photos.every, 1, 1000000));
+  photos.offset = static_cast<int>(f.integer("offset", photos.offset, 0, 1000000));
+  if (photos.offset >= photos.every) {
+    f.fail(f.name("offset"), "must be below every (" + std::to_string(photos.every) + ")");
+  }
+  photos.rightBelow = f.number("right_below", photos.rightBelow, 0.01, 1.0);
+  photos.minEach = static_cast<int>(f.integer("min_each", photos.minEach, 1, 100000));
+  return photos;
+}
+
 MakeHumanSource parseMakeHuman(Fields& f) {
   MakeHumanSource source;
   source.root = f.path("root", /*directoryAllowed=*/true);
@@ -392,6 +414,11 @@ DatasetManifest parseManifest(const std::string& text, const fs::path& file) {
   for (std::size_t i = 0; i < photos.size(); ++i) {
     Fields f(photos[i], "photos[" + std::to_string(i) + "]", file, folder);
     manifest.photos.push_back(parsePhotos(f));
+    f.rejectUnknown();
+  }
+  if (top.has("calibration_photos")) {
+    Fields f(top.at("calibration_photos"), "calibration_photos", file, folder);
+    manifest.calibrationPhotos = parseCalibrationPhotos(f);
     f.rejectUnknown();
   }
   top.rejectUnknown();

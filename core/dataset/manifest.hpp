@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,20 @@ struct PhotoSource {
   bool refiner = true;
 };
 
+// Annotated photos that the whole photo pipeline fits once the model is trained, so that the point
+// check is calibrated on the pipeline's own fits (core/eval/photo_fit_calibration.hpp, as `clm3d
+// calibrate`): of the folder or list, the photos at positions offset, offset + every, ...
+// (0-based). They should be photos the check did not learn from (a `photos` source with `refiner`
+// false).
+struct CalibrationPhotos {
+  std::filesystem::path folder;  // absolute; empty when `list` is given
+  std::filesystem::path list;    // absolute; empty when `folder` is given
+  int every = 1;
+  int offset = 0;
+  double rightBelow = 0.08;  // a fit is right within this share of its truth's face box
+  int minEach = 10;          // right and wrong fits a view's |yaw| needs for a curve of its own
+};
+
 struct DatasetManifest {
   std::filesystem::path file;       // where it was read from (for messages)
   std::string scheme = "thesis25";  // built-in name or an absolute path to a scheme JSON
@@ -104,6 +119,7 @@ struct DatasetManifest {
   std::vector<IctTexturedSource> ictTextured;
   std::vector<MakeHumanSource> makehuman;
   std::vector<PhotoSource> photos;
+  std::optional<CalibrationPhotos> calibrationPhotos;
   AugmentationSettings augmentation;  // appearance augmentation of the training renders
   std::string name;                   // for provenance; defaults to the file's stem
 };

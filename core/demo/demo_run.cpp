@@ -9,6 +9,7 @@
 #include "core/common/error.hpp"
 #include "core/dataset/manifest_writer.hpp"
 #include "core/demo/detail/demo_pipeline.hpp"
+#include "core/eval/calibrated_training.hpp"
 #include "core/eval/eval_plots.hpp"
 #include "core/eval/eval_report.hpp"
 #include "core/model/model_file.hpp"
@@ -110,8 +111,9 @@ RealDemo runRealDemo(const R& args, RealDemo real, const std::string& version,
   TrainSettings settings;
   settings.threads = args.threads;
   const auto trainStart = std::chrono::steady_clock::now();
-  const ClmModel model = trainFromManifest(args.realManifest, settings, version,
-                                           reporter.stage("demo: real-face training"));
+  const CalibratedTraining trained = trainAndCalibrate(args.realManifest, settings, version,
+                                                       reporter.stage("demo: real-face training"));
+  const ClmModel& model = trained.model;
   fs::create_directories(real.model.parent_path());
   saveModel(model, real.model);
   speaker.out() << "demo: trained the real-face model in " << std::setprecision(1)
@@ -119,6 +121,13 @@ RealDemo runRealDemo(const R& args, RealDemo real, const std::string& version,
                 << "\n  LICENCE: it learnt from LFPW photos, which are for research use only "
                    "(300-W terms); the model inherits those terms: do not redistribute it or use "
                    "it commercially\n";
+  if (trained.calibration) {
+    speaker.out() << "demo: its point check calibrated on the photo pipeline's fits of "
+                  << trained.calibration->photos << " annotated photos\n";
+  } else if (!trained.calibrationSkipped.empty()) {
+    speaker.out() << "demo: warning: calibration photos not used: " << trained.calibrationSkipped
+                  << '\n';
+  }
   speaker.flush();
 
   TrackerSettings tracking;

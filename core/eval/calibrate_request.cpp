@@ -1,6 +1,5 @@
 #include "core/eval/calibrate_request.hpp"
 
-#include <iomanip>
 #include <sstream>
 
 #include "core/common/error.hpp"
@@ -63,31 +62,12 @@ std::string runCalibrate(const CalibrateRequest& request, const ProgressCallback
   const std::vector<std::filesystem::path> truths = findTruthFiles(images, request.truthDir);
   const PhotoFitCalibration calibration =
       calibratePhotoFits(model, images, truths, request.settings, progress, cancel);
-  model.refiner.check.photoFitCurves = calibration.curves;
+  applyPhotoFitCalibration(model, calibration, request.images);
   saveModel(model, request.out);
 
   std::ostringstream out;
-  out << "calibrated the check of " << request.model.string() << " on " << calibration.photos
-      << " photos (" << calibration.judged << " fits judged by the check, " << calibration.noFace
-      << " without a fit); a fit is right within " << request.settings.rightBelow
-      << " of the face box\n";
-  const double threshold = request.settings.fit.minProbability;
-  out << "at probability >= " << threshold
-      << ": right fits kept and wrong ones accepted, by the check alone -> by the curves learnt "
-         "from the other half of the photos\n";
-  out << "| view |yaw| | fits | right | wrong | curve | right kept | wrong accepted |\n"
-      << "|---|---|---|---|---|---|---|\n";
-  for (const PhotoFitCalibrationRow& row : calibration.rows) {
-    out << "| " << row.viewYawDeg << " | " << row.right + row.wrong << " | " << row.right << " | "
-        << row.wrong << " | " << (row.curve ? "own" : "nearest") << " | " << row.rightKeptBefore
-        << " -> " << row.rightKeptHeldOut << " | " << row.wrongAcceptedBefore << " -> "
-        << row.wrongAcceptedHeldOut << " |\n";
-  }
-  out << std::setprecision(4);
-  for (const PhotoFitCurve& curve : calibration.curves) {
-    out << "curve |yaw| " << curve.viewYawDeg << ": p = 1 / (1 + exp(-(" << curve.slope
-        << " * log-odds of the check + " << curve.offset << ")))\n";
-  }
+  out << "calibrated the check of " << request.model.string() << " on ";
+  out << formatPhotoFitCalibration(calibration, request.settings);
   out << "calibrated model: " << request.out.string() << "\n";
   return out.str();
 }

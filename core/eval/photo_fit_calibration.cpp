@@ -5,8 +5,10 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include "core/common/error.hpp"
 #include "core/common/logistic_curve.hpp"
@@ -108,6 +110,7 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
       },
       cancel);
   if (cancel != nullptr && cancel->cancelled()) throw Cancelled();
+  if (progress) progress(1.0, "photo fits");  // worker 0 reports, and may finish first
 
   PhotoFitCalibration out;
   out.photos = count;
@@ -152,6 +155,39 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
     out.rows.push_back(row);
   }
   return out;
+}
+
+void applyPhotoFitCalibration(ClmModel& model, const PhotoFitCalibration& calibration,
+                              const std::filesystem::path& source) {
+  model.refiner.check.photoFitCurves = calibration.curves;
+  model.provenance.notes += "; the point check calibrated on the photo pipeline's fits of " +
+                            std::to_string(calibration.photos) + " annotated photos (" +
+                            source.string() + ")";
+}
+
+std::string formatPhotoFitCalibration(const PhotoFitCalibration& calibration,
+                                      const PhotoFitCalibrationSettings& settings) {
+  std::ostringstream out;
+  out << calibration.photos << " photos (" << calibration.judged << " fits judged by the check, "
+      << calibration.noFace << " without a fit); a fit is right within " << settings.rightBelow
+      << " of the face box\n";
+  out << "at probability >= " << settings.fit.minProbability
+      << ": right fits kept and wrong ones accepted, by the check alone -> by the curves learnt "
+         "from the other half of the photos\n";
+  out << "| view |yaw| | fits | right | wrong | curve | right kept | wrong accepted |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  for (const PhotoFitCalibrationRow& row : calibration.rows) {
+    out << "| " << row.viewYawDeg << " | " << row.right + row.wrong << " | " << row.right << " | "
+        << row.wrong << " | " << (row.curve ? "own" : "nearest") << " | " << row.rightKeptBefore
+        << " -> " << row.rightKeptHeldOut << " | " << row.wrongAcceptedBefore << " -> "
+        << row.wrongAcceptedHeldOut << " |\n";
+  }
+  out << std::setprecision(4);
+  for (const PhotoFitCurve& curve : calibration.curves) {
+    out << "curve |yaw| " << curve.viewYawDeg << ": p = 1 / (1 + exp(-(" << curve.slope
+        << " * log-odds of the check + " << curve.offset << ")))\n";
+  }
+  return out.str();
 }
 
 }  // namespace clm3d

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/common/progress.hpp"
@@ -58,5 +59,16 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
                                        const PhotoFitCalibrationSettings& settings,
                                        const ProgressCallback& progress = {},
                                        const CancelToken* cancel = nullptr);
+
+// The curves put into `model`'s check, and its provenance notes saying on how many photos of
+// `source` (a folder or list) they were learnt.
+void applyPhotoFitCalibration(ClmModel& model, const PhotoFitCalibration& calibration,
+                              const std::filesystem::path& source);
+
+// What `clm3d calibrate` and `clm3d train` print: per |yaw| of views the fits right and wrong and
+// what the threshold of settings.fit does to them, by the check alone and, held out, by the
+// curves; then the curves.
+std::string formatPhotoFitCalibration(const PhotoFitCalibration& calibration,
+                                      const PhotoFitCalibrationSettings& settings);
 
 }  // namespace clm3d

@@ -89,8 +89,8 @@ std::string describeModelFile(const std::filesystem::path& path) {
                 "a mean NCC of 0.35 or an expert response of 0.45 is 0.5)")
       << "\n";
   if (const auto& curves = model.refiner.check.photoFitCurves; !curves.empty()) {
-    out << "photo fits: the check through the curves clm3d calibrate learnt from photo fits, for "
-           "views of |yaw|";
+    out << "photo fits: the check through the curves learnt from the photo pipeline's own fits "
+           "(clm3d calibrate, or training's calibration_photos), for views of |yaw|";
     for (const PhotoFitCurve& curve : curves) out << " " << curve.viewYawDeg;
     out << "\n";
   }

@@ -10,8 +10,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/eval/calibrated_training.hpp"
 #include "core/model/model_file.hpp"
-#include "core/train/trainer.hpp"
 #include "ui/common/error_dialog.hpp"
 #include "ui/common/job_runner.hpp"
 #include "ui/train/count_text.hpp"
@@ -135,20 +135,20 @@ bool TrainRunPanel::start(const TrainJob& job) {
   runner_->wait();  // a previous run has ended; its thread may still be returning
   job_ = job;
   stage_.clear();
-  result_ = std::make_shared<std::shared_ptr<ClmModel>>();
+  result_ = std::make_shared<std::shared_ptr<CalibratedTraining>>();
   saved_ = std::make_shared<std::atomic<bool>>(false);
   auto result = result_;
   auto saved = saved_;
   const bool started = runner_->start(
       "train", [job, result, saved](const ProgressCallback& progress, CancelToken& cancel) {
-        auto model = std::make_shared<ClmModel>(
-            trainFromManifest(job.manifest, job.settings, job.toolVersion, progress, &cancel));
+        auto trained = std::make_shared<CalibratedTraining>(
+            trainAndCalibrate(job.manifest, job.settings, job.toolVersion, progress, &cancel));
         cancel.throwIfCancelled();
         progress(0.995, "saving");
         std::filesystem::create_directories(job.output.parent_path());
-        saveModel(*model, job.output);
+        saveModel(trained->model, job.output);
         saved->store(true);
-        *result = std::move(model);
+        *result = std::move(trained);
       });
   if (!started) return false;
   busy_ = true;
@@ -196,7 +196,9 @@ void TrainRunPanel::refreshStatus() {
 }
 
 void TrainRunPanel::onFinished() {
-  trained_ = *result_;
+  const std::shared_ptr<CalibratedTraining> trained = *result_;
+  // The model inside the result, shared with it (no copy of a model of tens of megabytes).
+  if (trained) trained_ = std::shared_ptr<const ClmModel>(trained, &trained->model);
   const double seconds = runner_->elapsedSeconds();
   progress_->setValue(100);
   const QString file = QString::fromStdString(job_.output.string());
@@ -207,6 +209,14 @@ void TrainRunPanel::onFinished() {
   status_->setText(tr("Finished in %1").arg(formatSeconds(seconds)));
   appendLog(stamp() +
             tr("finished: model saved to %1 (%2 MB)").arg(file).arg(megabytes, 0, 'f', 2));
+  if (trained && trained->calibration) {
+    appendLog(tr("the point check calibrated on the photo pipeline's fits of %1")
+                  .arg(QString::fromStdString(formatPhotoFitCalibration(
+                      *trained->calibration, trained->calibrationSettings))));
+  } else if (trained && !trained->calibrationSkipped.empty()) {
+    appendLog(tr("calibration photos not used: %1")
+                  .arg(QString::fromStdString(trained->calibrationSkipped)));
+  }
   if (trained_) {
     appendLog(modelSummary(*trained_));
     emit modelSaved(file);

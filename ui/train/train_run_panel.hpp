@@ -1,7 +1,8 @@
 // The run part of the training page: the model name, Train and Cancel, a progress bar with the
 // stage, elapsed time and ETA, and a log of stage changes and the result. It runs
-// trainFromManifest and saves the model on a JobRunner worker thread (the offscreen renderer runs
-// there, never on the GUI thread), so the window stays responsive; a cancelled run leaves no file.
+// trainAndCalibrate (training, then the manifest's photo-fit calibration) and saves the model on
+// a JobRunner worker thread (the offscreen renderer runs there, never on the GUI thread), so the
+// window stays responsive; a cancelled run leaves no file.
 #pragma once
 
 #include <QString>
@@ -13,6 +14,10 @@
 
 #include "core/model/clm_model.hpp"
 #include "core/train/train_settings.hpp"
+
+namespace clm3d {
+struct CalibratedTraining;  // core/eval/calibrated_training.hpp
+}
 
 class QLabel;
 class QLineEdit;
@@ -83,7 +88,7 @@ class TrainRunPanel : public QWidget {
 
   TrainJob job_;
   QString stage_;
-  std::shared_ptr<std::shared_ptr<ClmModel>> result_;
+  std::shared_ptr<std::shared_ptr<CalibratedTraining>> result_;
   std::shared_ptr<std::atomic<bool>> saved_;
   std::shared_ptr<const ClmModel> trained_;
 };

@@ -207,6 +207,46 @@ TEST_F(ManifestTest, EveryErrorNamesTheFileAndTheField) {
   }
 }
 
+TEST_F(ManifestTest, CalibrationPhotosAreReadWithTheirDefaultsAndChecked) {
+  writeFile(dir_ / "cal.txt", "x.png\n");
+  const std::string scans = std::string(R"({"version": 1, "scans": [)") + kScan + "], ";
+  const DatasetManifest plain = load(scans + R"("calibration_photos": {"list": "cal.txt"}})");
+  ASSERT_TRUE(plain.calibrationPhotos);
+  EXPECT_TRUE(fs::equivalent(plain.calibrationPhotos->list, dir_ / "cal.txt"));
+  EXPECT_EQ(plain.calibrationPhotos->every, 1);
+  EXPECT_EQ(plain.calibrationPhotos->offset, 0);
+  EXPECT_EQ(plain.calibrationPhotos->rightBelow, 0.08);
+  EXPECT_EQ(plain.calibrationPhotos->minEach, 10);
+  const DatasetManifest set = load(scans + R"("calibration_photos": {"list": "cal.txt",
+      "every": 7, "offset": 2, "right_below": 0.1, "min_each": 4}})");
+  EXPECT_EQ(set.calibrationPhotos->every, 7);
+  EXPECT_EQ(set.calibrationPhotos->offset, 2);
+  EXPECT_EQ(set.calibrationPhotos->rightBelow, 0.1);
+  EXPECT_EQ(set.calibrationPhotos->minEach, 4);
+  EXPECT_FALSE(load(scans + R"("photos": []})").calibrationPhotos);
+
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"("calibration_photos": {"every": 7}})",
+       "field calibration_photos.folder: give exactly one of folder and list"},
+      {R"("calibration_photos": {"list": "cal.txt", "folder": "scans"}})",
+       "field calibration_photos.folder: give exactly one of folder and list"},
+      {R"("calibration_photos": {"list": "cal.txt", "every": 7, "offset": 7}})",
+       "field calibration_photos.offset: must be below every (7)"},
+      {R"("calibration_photos": {"list": "cal.txt", "every": 0}})",
+       "field calibration_photos.every: must be in [1, 1000000], got 0"},
+      {R"("calibration_photos": {"list": "cal.txt", "right_below": 2}})",
+       "field calibration_photos.right_below: must be in"},
+      {R"("calibration_photos": {"list": "none.txt"}})",
+       "field calibration_photos.list: file not found"},
+      {R"("calibration_photos": {"list": "cal.txt", "step": 7}})", "calibration_photos.step"},
+  };
+  for (const auto& [json, expected] : cases) {
+    const std::string message = error(scans + json);
+    EXPECT_NE(message.find(expected), std::string::npos)
+        << json << "\n -> '" << message << "'\n expected '" << expected << "'";
+  }
+}
+
 TEST_F(ManifestTest, MissingManifestIsAnInputError) {
   EXPECT_THROW(loadManifest(dir_ / "none.json"), InputError);
 }
