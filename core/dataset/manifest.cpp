@@ -195,19 +195,21 @@ AugmentationSettings parseAugmentation(Fields& f) {
   return a;
 }
 
+// A photo set's "folder" or "list" (exactly one), into `folder` or `list`.
+void parseFolderOrList(Fields& f, fs::path& folder, fs::path& list) {
+  const bool hasFolder = f.has("folder");
+  if (hasFolder == f.has("list")) f.fail(f.name("folder"), "give exactly one of folder and list");
+  if (hasFolder) {
+    folder = f.path("folder", /*directoryAllowed=*/true);
+    if (!fs::is_directory(folder)) f.fail(f.name("folder"), "not a folder: " + folder.string());
+  } else {
+    list = f.path("list");
+  }
+}
+
 PhotoSource parsePhotos(Fields& f) {
   PhotoSource source;
-  const bool folder = f.has("folder");
-  const bool list = f.has("list");
-  if (folder == list) f.fail(f.name("folder"), "give exactly one of folder and list");
-  if (folder) {
-    source.folder = f.path("folder", /*directoryAllowed=*/true);
-    if (!fs::is_directory(source.folder)) {
-      f.fail(f.name("folder"), "not a folder: " + source.folder.string());
-    }
-  } else {
-    source.list = f.path("list");
-  }
+  parseFolderOrList(f, source.folder, source.list);
   source.limit = static_cast<int>(f.integer("limit", 0, 0, 1000000));
   source.jaw = f.boolean("jaw", false);
   source.perView = static_cast<int>(f.integer("per_view", 0, 0, 1000000));
@@ -217,16 +219,7 @@ PhotoSource parsePhotos(Fields& f) {
 
 CalibrationPhotos parseCalibrationPhotos(Fields& f) {
   CalibrationPhotos photos;
-  const bool folder = f.has("folder");
-  if (folder == f.has("list")) f.fail(f.name("folder"), "give exactly one of folder and list");
-  if (folder) {
-    photos.folder = f.path("folder", /*directoryAllowed=*/true);
-    if (!fs::is_directory(photos.folder)) {
-      f.fail(f.name("folder"), "not a folder: " + photos.folder.string());
-    }
-  } else {
-    photos.list = f.path("list");
-  }
+  parseFolderOrList(f, photos.folder, photos.list);
   photos.every = static_cast<int>(f.integer("every", photos.every, 1, 1000000));
   photos.offset = static_cast<int>(f.integer("offset", photos.offset, 0, 1000000));
   if (photos.offset >= photos.every) {
@@ -234,6 +227,8 @@ CalibrationPhotos parseCalibrationPhotos(Fields& f) {
   }
   photos.rightBelow = f.number("right_below", photos.rightBelow, 0.01, 1.0);
   photos.minEach = static_cast<int>(f.integer("min_each", photos.minEach, 1, 100000));
+  photos.imageMinFits =
+      static_cast<int>(f.integer("image_min_fits", photos.imageMinFits, 0, 1000000));
   return photos;
 }
 

@@ -108,6 +108,7 @@ struct CalibrationPhotos {
   int offset = 0;
   double rightBelow = 0.08;  // a fit is right within this share of its truth's face box
   int minEach = 10;          // right and wrong fits a view's |yaw| needs for a curve of its own
+  int imageMinFits = 100;    // fits a view's |yaw| needs for the image term (0: never)
 };
 
 struct DatasetManifest {

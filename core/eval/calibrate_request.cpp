@@ -36,6 +36,12 @@ std::vector<Option<R>> makeOptions() {
                                      "nearest |yaw|'s)",
                                      1, 100000),
                        [](R& r) -> int& { return r.settings.minEach; }),
+      integerOption<R>(commandOption("image-min-fits",
+                                     "a view's |yaw| with at least this many fits also reads the "
+                                     "image at the fit's points (the image term); 0: the check's "
+                                     "log-odds alone",
+                                     0, 1000000),
+                       [](R& r) -> int& { return r.settings.imageMinFits; }),
       integerOption<R>(commandOption("threads", "worker threads (0: one per core)", 0, 256),
                        [](R& r) -> int& { return r.settings.threads; }),
       flagOption<R>(commandOption("quiet", "no progress on stderr"), &R::quiet),

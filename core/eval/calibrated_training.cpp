@@ -84,6 +84,7 @@ CalibratedTraining trainAndCalibrate(const fs::path& manifestPath, const TrainSe
   }
   out.calibrationSettings.rightBelow = manifest.calibrationPhotos->rightBelow;
   out.calibrationSettings.minEach = manifest.calibrationPhotos->minEach;
+  out.calibrationSettings.imageMinFits = manifest.calibrationPhotos->imageMinFits;
   out.calibrationSettings.threads = settings.threads;
   try {
     PhotoFitCalibration calibration = calibratePhotoFits(

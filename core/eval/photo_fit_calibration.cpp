@@ -13,9 +13,12 @@
 #include "core/common/error.hpp"
 #include "core/common/logistic_curve.hpp"
 #include "core/common/parallel_for.hpp"
+#include "core/eval/detail/photo_fit_judge.hpp"
 #include "core/eval/detail/scored_truth.hpp"
 #include "core/eval/point_set_error.hpp"
 #include "core/refine/descent_check.hpp"
+#include "core/refine/view_check.hpp"
+#include "core/viz/image_file.hpp"
 
 namespace clm3d {
 namespace {
@@ -26,6 +29,7 @@ struct JudgedFit {
   double viewYawDeg = 0.0;
   double logOdds = 0.0;
   bool right = false;
+  Eigen::VectorXf features;  // photoFitFeatures at the fit's points (empty: not read)
 };
 
 // The error over the truth's face box of `points` (every scheme landmark, image pixels), as
@@ -38,25 +42,60 @@ double boxError(const Eigen::Matrix2Xd& points, const ScoredTruth& truth, const 
   return scorePointSet(truth.points, truth.boxSize, prediction, scheme, {}).boxError;
 }
 
-// Curves from `fits` (those `use` selects), per |yaw| with enough of both kinds.
+// Curves from `fits` (those `use` selects), per |yaw| with enough of both kinds; with an image
+// term where at least `imageMinFits` of them have features (0: never).
 std::vector<PhotoFitCurve> learnCurves(const std::vector<JudgedFit>& fits,
-                                       const std::function<bool(std::size_t)>& use, int minEach) {
-  std::map<double, std::pair<std::vector<double>, std::vector<bool>>> byYaw;
+                                       const std::function<bool(std::size_t)>& use, int minEach,
+                                       int imageMinFits) {
+  std::map<double, std::vector<const JudgedFit*>> byYaw;
   for (std::size_t i = 0; i < fits.size(); ++i) {
-    if (!fits[i].judged || !use(i)) continue;
-    auto& [scores, labels] = byYaw[fits[i].viewYawDeg];
-    scores.push_back(fits[i].logOdds);
-    labels.push_back(fits[i].right);
+    if (fits[i].judged && use(i)) byYaw[fits[i].viewYawDeg].push_back(&fits[i]);
   }
   std::vector<PhotoFitCurve> curves;
-  for (const auto& [yaw, sample] : byYaw) {
-    const auto right = std::count(sample.second.begin(), sample.second.end(), true);
-    const auto wrong = static_cast<long>(sample.second.size()) - right;
+  for (const auto& [yaw, group] : byYaw) {
+    const auto right =
+        std::count_if(group.begin(), group.end(), [](const JudgedFit* fit) { return fit->right; });
+    const auto wrong = static_cast<long>(group.size()) - right;
     if (right < minEach || wrong < minEach) continue;
-    const LogisticCurve curve = fitLogisticCurve(sample.first, sample.second);
-    curves.push_back({yaw, curve.slope, curve.offset});
+    // The fits whose features were read, all of one length (one layout per |yaw|).
+    std::vector<const JudgedFit*> read;
+    for (const JudgedFit* fit : group) {
+      if (fit->features.size() > 0 && fit->features.size() == group.front()->features.size())
+        read.push_back(fit);
+    }
+    const auto readRight =
+        std::count_if(read.begin(), read.end(), [](const JudgedFit* fit) { return fit->right; });
+    if (imageMinFits > 0 && static_cast<int>(read.size()) >= imageMinFits && readRight >= minEach &&
+        static_cast<long>(read.size()) - readRight >= minEach) {
+      PhotoFitSample sample;
+      sample.features.resize(static_cast<Eigen::Index>(read.size()), read.front()->features.size());
+      for (std::size_t j = 0; j < read.size(); ++j) {
+        sample.features.row(static_cast<Eigen::Index>(j)) = read[j]->features.transpose();
+        sample.logOdds.push_back(read[j]->logOdds);
+        sample.right.push_back(read[j]->right);
+      }
+      curves.push_back(learnPhotoFitJudge(yaw, sample));
+      continue;
+    }
+    std::vector<double> scores;
+    std::vector<bool> labels;
+    for (const JudgedFit* fit : group) {
+      scores.push_back(fit->logOdds);
+      labels.push_back(fit->right);
+    }
+    const LogisticCurve curve = fitLogisticCurve(scores, labels);
+    curves.push_back({yaw, curve.slope, curve.offset, {}, {}});
   }
   return curves;
+}
+
+// The probability `curves` give a fit (its check's, when none applies).
+double judged(const std::vector<PhotoFitCurve>& curves, const JudgedFit& fit) {
+  DescentCheck check;
+  check.photoFitCurves = curves;
+  const PhotoFitCurve* curve = nearestPhotoFitCurve(check, fit.viewYawDeg);
+  const double own = LogisticCurve{}(fit.logOdds);
+  return curve == nullptr ? own : photoFitProbability(*curve, own, fit.features);
 }
 
 }  // namespace
@@ -99,8 +138,17 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
             const double error = boxError(fit.points, scored[slot], scheme);
             if (fit.probabilitySource == ProbabilitySource::Check && std::isfinite(error) &&
                 fit.view >= 0 && fit.view < static_cast<int>(model.views.size())) {
-              fits[slot] = {true, std::abs(model.views[static_cast<std::size_t>(fit.view)].yawDeg),
-                            logOdds(fit.probability), error <= settings.rightBelow};
+              JudgedFit& judgedFit = fits[slot];
+              judgedFit = {true,
+                           std::abs(model.views[static_cast<std::size_t>(fit.view)].yawDeg),
+                           logOdds(fit.probability),
+                           error <= settings.rightBelow,
+                           {}};
+              // The image term reads the photo as the fitter did (readImage, the same pixels).
+              if (settings.imageMinFits > 0) {
+                judgedFit.features =
+                    photoFitFeatures(model, fit.view, readImage(images[slot]), fit.points);
+              }
             }
           }
           const int finished = ++done;
@@ -119,17 +167,18 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
     out.noFace += fitted[i] ? 0 : 1;
   }
   out.curves = learnCurves(
-      fits, [](std::size_t) { return true; }, settings.minEach);
+      fits, [](std::size_t) { return true; }, settings.minEach, settings.imageMinFits);
   if (out.curves.empty())
     throw InputError("calibrate: no view's |yaw| had " + std::to_string(settings.minEach) +
                      " right and " + std::to_string(settings.minEach) +
                      " wrong fits to learn a curve from (" + std::to_string(out.judged) +
                      " fits judged by the check): give more photos, at more poses");
   // Held out: each half judged by the curves of the other.
-  std::array<DescentCheck, 2> halves;
+  std::array<std::vector<PhotoFitCurve>, 2> halves;
   for (std::size_t half = 0; half < 2; ++half) {
-    halves[half].photoFitCurves = learnCurves(
-        fits, [half](std::size_t i) { return i % 2 != half; }, settings.minEach);
+    halves[half] = learnCurves(
+        fits, [half](std::size_t i) { return i % 2 != half; }, settings.minEach,
+        settings.imageMinFits);
   }
   const double threshold = settings.fit.minProbability;
   std::map<double, PhotoFitCalibrationRow> rows;
@@ -139,7 +188,7 @@ PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
     PhotoFitCalibrationRow& row = rows[fit.viewYawDeg];
     row.viewYawDeg = fit.viewYawDeg;
     const double before = LogisticCurve{}(fit.logOdds);
-    const double heldOut = photoFitProbability(halves[i % 2], before, fit.viewYawDeg);
+    const double heldOut = judged(halves[i % 2], fit);
     (fit.right ? row.right : row.wrong) += 1;
     if (fit.right) {
       row.rightKeptBefore += before >= threshold ? 1 : 0;

@@ -26,6 +26,9 @@ struct PhotoFitCalibrationSettings {
   // A |yaw| of views gets a curve from at least this many right and this many wrong fits; the
   // others take the curve of the nearest |yaw| that has one.
   int minEach = 10;
+  // A |yaw| with at least this many fits gets a curve with an image term (PhotoFitCurve); 0:
+  // curves of the check alone (model format 9's).
+  int imageMinFits = 100;
   int threads = 0;  // 0: one per core
 };
 

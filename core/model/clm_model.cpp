@@ -1,5 +1,6 @@
 #include "core/model/clm_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -187,6 +188,32 @@ void ClmModel::validate() const {
   } catch (const Error& e) {
     fail("refiner", e.what());
   }
+  for (const PhotoFitCurve& curve : refiner.check.photoFitCurves) {
+    if (!curve.hasImageTerm()) continue;
+    const int layout = photoFitLayoutView(curve.viewYawDeg);
+    Eigen::Index seen = -1;
+    if (layout >= 0) {
+      const std::vector<bool>& visible = views[static_cast<std::size_t>(layout)].visible;
+      seen = std::count(visible.begin(), visible.end(), true);
+    }
+    if (curve.imageWeights.size() != seen * kDescentFeaturesPerPoint) {
+      fail("refiner.check.photoFitCurves", "the image term of |yaw| " +
+                                               std::to_string(curve.viewYawDeg) +
+                                               " does not match the landmarks its views see");
+    }
+  }
+}
+
+int ClmModel::photoFitLayoutView(double absYawDeg) const {
+  int best = -1;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const ViewModel& view = views[v];
+    if (view.mirrored || std::abs(std::abs(view.yawDeg) - absYawDeg) > 1e-9) continue;
+    if (best < 0 ||
+        std::abs(view.pitchDeg) < std::abs(views[static_cast<std::size_t>(best)].pitchDeg))
+      best = static_cast<int>(v);
+  }
+  return best;
 }
 
 int ClmModel::nearestView(double pitchDeg, double yawDeg) const {

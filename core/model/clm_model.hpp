@@ -52,6 +52,10 @@ struct ClmModel {
   // Throws Error describing the first inconsistency: "field views[3].scales[1].pca: ..." (sizes
   // vs scheme, visible vs landmarks, PCA dimensions, orthonormality, non-finite values...).
   void validate() const;
+  // The stored (not mirrored) view of |yaw| `absYawDeg` at the pitch nearest 0: whose check
+  // layout reads the photo fits of every view of that |yaw| (PhotoFitCurve's image term); -1 when
+  // there is none.
+  int photoFitLayoutView(double absYawDeg) const;
   // The view whose centre is nearest to (pitch, yaw) in degrees; -1 if there are no views.
   int nearestView(double pitchDeg, double yawDeg) const;
 };

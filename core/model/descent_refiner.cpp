@@ -55,6 +55,12 @@ void DescentCheck::validate(Eigen::Index points) const {
     if (!(curve.viewYawDeg >= 0.0 && curve.viewYawDeg <= 180.0) || !std::isfinite(curve.slope) ||
         !std::isfinite(curve.offset))
       throw Error("check.photoFitCurves: a view's |yaw| in [0, 180] and finite curves");
+    if (curve.imageMean.size() != curve.imageWeights.size() ||
+        curve.imageWeights.size() % kDescentFeaturesPerPoint != 0 || !curve.imageMean.allFinite() ||
+        !curve.imageWeights.allFinite())
+      throw Error(
+          "check.photoFitCurves: an image term's mean and weights must be finite, of one "
+          "size, a whole number of landmarks' features");
   }
 }
 

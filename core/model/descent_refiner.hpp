@@ -30,9 +30,19 @@ struct DescentStage {
 // own fits of annotated photos (model format 9). The check learns from refined starts around the
 // truth of near-frontal photos and is too sure of the pipeline's fits of turned faces: on 1,185
 // AFLW training faces it accepted 82 of the 179 fits off the face in the +-60 views.
+//
+// Model format 10 adds an image term: what the check cannot see on a turned face, read from the
+// image at the fit's points with the layout of these views' own check (the gradient-orientation
+// features at the landmarks the view sees, core/refine/view_check.hpp), learnt with the curve from
+// the same fits: p = 1 / (1 + exp(-(slope * log(c / (1 - c)) + offset + imageWeights . (f -
+// imageMean)))). On AFLW's test faces at |yaw| 60-90 it took the faces fitted right from 90 to 106
+// and those reported although off the face from 42 to 35 (docs/fitting.md#the-image-term).
 struct PhotoFitCurve {
   double viewYawDeg = 0.0;  // |yaw| of the views it judges (a view and its mirror image alike)
-  double slope = 1.0, offset = 0.0;  // p = 1 / (1 + exp(-(slope * log(c / (1 - c)) + offset)))
+  double slope = 1.0, offset = 0.0;         // on the check's log-odds log(c / (1 - c))
+  Eigen::VectorXf imageMean, imageWeights;  // empty: no image term (format 9, too few fits)
+
+  bool hasImageTerm() const { return imageWeights.size() > 0; }
 };
 
 // A linear score of the features at the refined points, turned into the probability that the

@@ -224,11 +224,12 @@ json refinerJson(const DescentRefiner& refiner) {
                     {"bias", check.bias},
                     {"slope", check.slope},
                     {"offset", check.offset}};
-    // Version 9: [|yaw|, slope, offset] per curve; absent when the check has none.
+    // Version 9: [|yaw|, slope, offset] per curve; absent when the check has none. Version 10:
+    // and the image term's feature count (0: none), its mean and weights in the payload.
     if (!check.photoFitCurves.empty()) {
       json curves = json::array();
       for (const PhotoFitCurve& curve : check.photoFitCurves)
-        curves.push_back({curve.viewYawDeg, curve.slope, curve.offset});
+        curves.push_back({curve.viewYawDeg, curve.slope, curve.offset, curve.imageWeights.size()});
       out["check"]["photoFitCurves"] = curves;
     }
   }
@@ -340,14 +341,25 @@ ClmModel skeletonFrom(const Header& headerValue, std::size_t arrayBytes, std::ui
       out.slope = number(check, "slope");
       out.offset = number(check, "offset");
       if (version >= 9 && check.has("photoFitCurves")) {
+        const std::size_t entries = version >= 10 ? 4 : 3;
         for (const Header& curve : array(check, "photoFitCurves", kMaxPhotoFitCurves)) {
-          if (!curve.is_array() || curve.size() != 3 ||
+          if (!curve.is_array() || curve.size() != entries ||
               !std::all_of(curve.begin(), curve.end(),
-                           [](const Header& value) { return value.is_number(); })) {
-            fieldError(check.name("photoFitCurves"), "entries must be [|yaw|, slope, offset]");
+                           [](const Header& value) { return value.is_number(); }) ||
+              (entries == 4 && (!curve[3].is_number_integer() || curve[3] < 0 ||
+                                curve[3].get<std::int64_t>() % kDescentFeaturesPerPoint != 0))) {
+            fieldError(check.name("photoFitCurves"),
+                       entries == 4 ? "entries must be [|yaw|, slope, offset, image features]"
+                                    : "entries must be [|yaw|, slope, offset]");
           }
-          out.photoFitCurves.push_back(
-              {curve[0].get<double>(), curve[1].get<double>(), curve[2].get<double>()});
+          PhotoFitCurve read{
+              curve[0].get<double>(), curve[1].get<double>(), curve[2].get<double>(), {}, {}};
+          const auto features = entries == 4 ? curve[3].get<std::uint64_t>() : 0;
+          addValues(floats, features, 2, check.path());
+          // Sized here, read after the views' checks.
+          read.imageMean.resize(static_cast<Eigen::Index>(features));
+          read.imageWeights.resize(static_cast<Eigen::Index>(features));
+          out.photoFitCurves.push_back(std::move(read));
         }
       }
       check.rejectUnknown();
@@ -599,6 +611,10 @@ ClmModel parsePayload(std::string_view payload, std::uint32_t version) {
     readArray(reader, view.check.classifier.featureMean);
     readArray(reader, view.check.classifier.weights);
   }
+  for (PhotoFitCurve& curve : model.refiner.check.photoFitCurves) {  // version 10
+    readArray(reader, curve.imageMean);
+    readArray(reader, curve.imageWeights);
+  }
   if (std::any_of(mirrorOf.begin(), mirrorOf.end(), [](int v) { return v >= 0; })) {
     const Scheme scheme = model.scheme();
     for (std::size_t v = 0; v < mirrorOf.size(); ++v) {
@@ -724,6 +740,10 @@ std::string serializeModel(const ClmModel& model) {
     appendFloats(payload, check.meanShape);
     appendFloats(payload, check.classifier.featureMean);
     appendFloats(payload, check.classifier.weights);
+  }
+  for (const PhotoFitCurve& curve : model.refiner.check.photoFitCurves) {
+    appendFloats(payload, curve.imageMean);
+    appendFloats(payload, curve.imageWeights);
   }
   std::string file(kMagic);
   appendLittleEndian(file, kModelFormatVersion);

@@ -24,8 +24,10 @@ namespace clm3d {
 // 8: the stored views' optional checks (a view's "check"; its arrays after the refiner's) and the
 //    provenance's optional "adaptedFrom" (an adapted model's general model, video, frames).
 // 9: the refiner check's optional photo-fit curves (check "photoFitCurves", `clm3d calibrate`).
-// Version 1 files (no experts, every view stored) and versions 2 to 8 still load.
-inline constexpr std::uint32_t kModelFormatVersion = 9;
+// 10: each photo-fit curve's optional image term (its feature count the curve's fourth entry;
+//     its mean and weights after the views' checks).
+// Version 1 files (no experts, every view stored) and versions 2 to 9 still load.
+inline constexpr std::uint32_t kModelFormatVersion = 10;
 
 // Serialises the model (validate()s it first; throws Error if it is inconsistent).
 std::string serializeModel(const ClmModel& model);

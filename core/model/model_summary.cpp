@@ -91,7 +91,8 @@ std::string describeModelFile(const std::filesystem::path& path) {
   if (const auto& curves = model.refiner.check.photoFitCurves; !curves.empty()) {
     out << "photo fits: the check through the curves learnt from the photo pipeline's own fits "
            "(clm3d calibrate, or training's calibration_photos), for views of |yaw|";
-    for (const PhotoFitCurve& curve : curves) out << " " << curve.viewYawDeg;
+    for (const PhotoFitCurve& curve : curves)
+      out << " " << curve.viewYawDeg << (curve.hasImageTerm() ? " (with the image term)" : "");
     out << "\n";
   }
   const ModelProvenance& p = model.provenance;

@@ -32,14 +32,27 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
   return checkProbability(check, features);
 }
 
-double photoFitProbability(const DescentCheck& check, double checkProbability, double viewYawDeg) {
-  if (check.photoFitCurves.empty() || !std::isfinite(checkProbability)) return checkProbability;
+const PhotoFitCurve* nearestPhotoFitCurve(const DescentCheck& check, double viewYawDeg) {
   const double yaw = std::abs(viewYawDeg);
-  const PhotoFitCurve* nearest = &check.photoFitCurves.front();
+  const PhotoFitCurve* nearest = nullptr;
   for (const PhotoFitCurve& curve : check.photoFitCurves) {
-    if (std::abs(curve.viewYawDeg - yaw) < std::abs(nearest->viewYawDeg - yaw)) nearest = &curve;
+    if (nearest == nullptr ||
+        std::abs(curve.viewYawDeg - yaw) < std::abs(nearest->viewYawDeg - yaw))
+      nearest = &curve;
   }
-  return LogisticCurve{nearest->slope, nearest->offset}(logOdds(checkProbability));
+  return nearest;
+}
+
+double photoFitProbability(const PhotoFitCurve& curve, double checkProbability,
+                           const Eigen::VectorXf& imageFeatures) {
+  if (!std::isfinite(checkProbability)) return checkProbability;
+  double score = curve.slope * logOdds(checkProbability) + curve.offset;
+  if (curve.hasImageTerm()) {
+    // Points the features cannot be read at (not finite, an empty box) are not on a face.
+    if (imageFeatures.size() != curve.imageWeights.size()) return 0.0;
+    score += curve.imageWeights.dot(imageFeatures - curve.imageMean);
+  }
+  return LogisticCurve{}(score);
 }
 
 double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features) {

@@ -27,11 +27,15 @@ namespace clm3d {
 double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                      const Eigen::Matrix2Xd& points);
 
-// The probability that a photo's fit in a view of yaw `viewYawDeg` is right, from its check
-// probability `checkProbability`: the photo-fit curve (PhotoFitCurve, core/model/
-// descent_refiner.hpp) of the nearest |yaw| applied to its log-odds; `checkProbability` itself
-// when the check has no curves or it is not finite.
-double photoFitProbability(const DescentCheck& check, double checkProbability, double viewYawDeg);
+// The photo-fit curve (PhotoFitCurve, core/model/descent_refiner.hpp) of the |yaw| nearest
+// `viewYawDeg`'s; null when the check has none.
+const PhotoFitCurve* nearestPhotoFitCurve(const DescentCheck& check, double viewYawDeg);
+
+// The probability that a photo's fit is right by `curve`, from its check probability
+// `checkProbability` (returned as it is when not finite) and, for a curve with an image term, the
+// fit's photoFitFeatures (core/refine/view_check.hpp): 0 when they could not be read.
+double photoFitProbability(const PhotoFitCurve& curve, double checkProbability,
+                           const Eigen::VectorXf& imageFeatures = {});
 
 // The probability `check` gives to `features` (as descentFeatures gives them).
 double checkProbability(const DescentCheck& check, const Eigen::VectorXf& features);

@@ -30,16 +30,21 @@ void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
   }
 }
 
-double photoFitProbability(const ClmModel& model, const FitResult& fit) {
+double photoFitProbability(const ClmModel& model, const FitResult& fit, const cv::Mat& image) {
   if (fit.probabilitySource != ProbabilitySource::Check || fit.view < 0 ||
       fit.view >= static_cast<int>(model.views.size()))
     return fit.probability;
-  return photoFitProbability(model.refiner.check, fit.probability,
-                             model.views[static_cast<std::size_t>(fit.view)].yawDeg);
+  const PhotoFitCurve* curve = nearestPhotoFitCurve(
+      model.refiner.check, model.views[static_cast<std::size_t>(fit.view)].yawDeg);
+  if (curve == nullptr) return fit.probability;
+  const Eigen::VectorXf features = curve->hasImageTerm()
+                                       ? photoFitFeatures(model, fit.view, image, fit.points)
+                                       : Eigen::VectorXf();
+  return photoFitProbability(*curve, fit.probability, features);
 }
 
-void judgeAsPhotoFit(const ClmModel& model, FitResult& fit) {
-  const double p = photoFitProbability(model, fit);
+void judgeAsPhotoFit(const ClmModel& model, FitResult& fit, const cv::Mat& image) {
+  const double p = photoFitProbability(model, fit, image);
   if (p == fit.probability) return;
   fit.probability = p;
   fit.probabilitySource = ProbabilitySource::PhotoFitCurve;

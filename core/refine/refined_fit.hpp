@@ -23,12 +23,13 @@ void refineFit(const ClmModel& model, const cv::Mat& image, FitResult& fit,
 
 // The probability that judges `fit` as a photo's (`clm3d fit`, `clm3d batch`): the check's through
 // the model's photo-fit curve of the fit's view (photoFitProbability,
-// core/refine/descent_check.hpp) when the fit's probability is the check's and the model has
-// curves; else fit.probability.
-double photoFitProbability(const ClmModel& model, const FitResult& fit);
+// core/refine/descent_check.hpp), with the curve's image term read in `image` at the fit's
+// points, when the fit's probability is the check's and the model has curves; else
+// fit.probability.
+double photoFitProbability(const ClmModel& model, const FitResult& fit, const cv::Mat& image);
 
 // `fit` judged as a photo's: its probability set to photoFitProbability and its source to
 // ProbabilitySource::PhotoFitCurve when that differs from its own.
-void judgeAsPhotoFit(const ClmModel& model, FitResult& fit);
+void judgeAsPhotoFit(const ClmModel& model, FitResult& fit, const cv::Mat& image);
 
 }  // namespace clm3d

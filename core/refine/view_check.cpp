@@ -80,6 +80,15 @@ Eigen::VectorXf viewCheckFeatures(const ClmModel& model, int view, const ViewChe
   return descentFeatures(grey, frame, frame.inverse(inCrop), check.classifier.window);
 }
 
+Eigen::VectorXf photoFitFeatures(const ClmModel& model, int view, const cv::Mat& image,
+                                 const Eigen::Matrix2Xd& points) {
+  if (view < 0 || view >= static_cast<int>(model.views.size())) return {};
+  const int layout =
+      model.photoFitLayoutView(std::abs(model.views[static_cast<std::size_t>(view)].yawDeg));
+  if (layout < 0) return {};
+  return viewCheckFeatures(model, view, viewCheckLayout(model, layout), image, points);
+}
+
 double viewCheckProbability(const ClmModel& model, int view, const cv::Mat& image,
                             const Eigen::Matrix2Xd& points) {
   constexpr double none = std::numeric_limits<double>::quiet_NaN();

@@ -27,6 +27,13 @@ ViewCheck viewCheckLayout(const ClmModel& model, int view);
 Eigen::VectorXf viewCheckFeatures(const ClmModel& model, int view, const ViewCheck& check,
                                   const cv::Mat& image, const Eigen::Matrix2Xd& points);
 
+// The image features of a photo fit that ended in `view` (PhotoFitCurve's image term): the check
+// layout of ClmModel::photoFitLayoutView for the view's |yaw|, read at `points` (a mirrored view's
+// fit flipped, as viewCheckFeatures does). Empty when the model has no such view or the points
+// cannot be read.
+Eigen::VectorXf photoFitFeatures(const ClmModel& model, int view, const cv::Mat& image,
+                                 const Eigen::Matrix2Xd& points);
+
 // The probability that a fit in `view` with `points` is right, by the view's check; NaN when the
 // view has none or its features cannot be read.
 double viewCheckProbability(const ClmModel& model, int view, const cv::Mat& image,

@@ -153,7 +153,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     // choices (the start grid, the wider search, the refiner runs) keep the check's scale they
     // were chosen on.
     const auto passes = [this](const FitResult& result) {
-      return photoFitProbability(*model_, result) >= settings_.minProbability;
+      return photoFitProbability(*model_, result, lastImage_) >= settings_.minProbability;
     };
     FitResult fit;
     double turnedMilliseconds = 0.0;  // detection in turned copies, inside the search
@@ -197,7 +197,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
     }
     // A start from marked points brought its outline with it; a box brought none.
     if (startPoints.empty()) placeUnrefinedLandmarks(*model_, fitter.camera(), fit);
-    judgeAsPhotoFit(*model_, fit);
+    judgeAsPhotoFit(*model_, fit, lastImage_);
     outcome.fitMilliseconds = millisecondsSince(begin) - turnedMilliseconds;
     if (fit.view >= 0 && fit.view < static_cast<int>(model_->views.size())) {
       const ViewModel& view = model_->views[static_cast<std::size_t>(fit.view)];

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.hpp"
+#include "core/model/model_file.hpp"
 #include "core/scheme/landmark_file.hpp"
 #include "tests/support/fit_fixture.hpp"
 #include "tests/support/refiner_fixture.hpp"
@@ -121,7 +122,8 @@ struct CalibratedTrainingFixture {
     manifest = dir / "m.json";
     test::writeFile(manifest, R"({"version": 1, "procedural": [{"seeds": "1-2"}],
         "photos": [{"folder": "photos"}],
-        "calibration_photos": {"folder": "cal", "right_below": 0.3, "min_each": 2}})");
+        "calibration_photos": {"folder": "cal", "right_below": 0.3, "min_each": 2,
+                               "image_min_fits": 8}})");
   }
 };
 
@@ -154,6 +156,20 @@ TEST(CalibratedTraining, TheTrainedModelsCheckIsCalibratedOnTheManifestsPhotos) 
     EXPECT_EQ(curves[i].slope, trained.calibration->curves[i].slope);
   }
   EXPECT_EQ(trained.calibrationSettings.rightBelow, 0.3);
+  EXPECT_EQ(trained.calibrationSettings.imageMinFits, 8);
+  // The 8 fits (at least image_min_fits) gave the curve an image term, read with the frontal
+  // view's layout; the model holds it and survives its file.
+  ASSERT_EQ(curves.size(), 1u);
+  ASSERT_TRUE(curves[0].hasImageTerm());
+  const int frontal = trained.model.photoFitLayoutView(0.0);
+  ASSERT_GE(frontal, 0);
+  const auto& visible = trained.model.views[static_cast<std::size_t>(frontal)].visible;
+  EXPECT_EQ(curves[0].imageWeights.size(),
+            std::count(visible.begin(), visible.end(), true) * kDescentFeaturesPerPoint);
+  EXPECT_EQ(parseModel(serializeModel(trained.model), "m.clm3d")
+                .refiner.check.photoFitCurves[0]
+                .imageWeights,
+            curves[0].imageWeights);
   EXPECT_NE(trained.model.provenance.notes.find("calibrated on the photo pipeline's fits of 8"),
             std::string::npos)
       << trained.model.provenance.notes;

@@ -430,17 +430,31 @@ TEST(ModelFile, PhotoFitCurvesRoundTrip) {
   check.featureMean = Eigen::VectorXf::Zero(d);
   check.weights = Eigen::VectorXf::Ones(d);
   EXPECT_EQ(headerOf(serializeModel(model)).find("photoFitCurves"), std::string::npos);
-  check.photoFitCurves = {{0.0, 0.875, -2.5}, {30.0, 0.625, -1.4375}, {60.0, 0.5, -1.75}};
+  check.photoFitCurves = {
+      {0.0, 0.875, -2.5, {}, {}}, {30.0, 0.625, -1.4375, {}, {}}, {60.0, 0.5, -1.75, {}, {}}};
+  // Version 10: the image term of |yaw| 30, read with the -30 view's layout (4 landmarks seen).
+  PhotoFitCurve& turned = check.photoFitCurves[1];
+  turned.imageMean = Eigen::VectorXf::LinSpaced(4 * kDescentFeaturesPerPoint, -1.0f, 1.0f);
+  turned.imageWeights = Eigen::VectorXf::Constant(4 * kDescentFeaturesPerPoint, 0.25f);
   const std::string bytes = serializeModel(model);
   const ClmModel loaded = parseModel(bytes, "m.clm3d");
   EXPECT_EQ(serializeModel(loaded), bytes);
   ASSERT_EQ(loaded.refiner.check.photoFitCurves.size(), 3u);
   EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].viewYawDeg, 30.0);
   EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].slope, 0.625);
+  EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].imageMean, turned.imageMean);
+  EXPECT_EQ(loaded.refiner.check.photoFitCurves[1].imageWeights, turned.imageWeights);
+  EXPECT_FALSE(loaded.refiner.check.photoFitCurves[0].hasImageTerm());
   EXPECT_EQ(loaded.refiner.check.photoFitCurves[2].offset, -1.75);
   expectEditsRefused(bytes, "photoFitCurves",
-                     {{"[60.0,0.5,-1.75]", "[60.0,0.5]", "photoFitCurves"},
-                      {"[60.0,0.5,-1.75]", "[260.0,0.5,-1.75]", "photoFitCurves"}});
+                     {{"[60.0,0.5,-1.75,0]", "[60.0,0.5,-1.75]", "photoFitCurves"},
+                      {"[60.0,0.5,-1.75,0]", "[260.0,0.5,-1.75,0]", "photoFitCurves"},
+                      {"[60.0,0.5,-1.75,0]", "[60.0,0.5,-1.75,3]", "photoFitCurves"},
+                      {"[60.0,0.5,-1.75,0]", "[60.0,0.5,-1.75,128]", "bytes of arrays"}});
+  // An image term that does not match the landmarks its views see.
+  check.photoFitCurves[0].imageMean = Eigen::VectorXf::Zero(kDescentFeaturesPerPoint);
+  check.photoFitCurves[0].imageWeights = Eigen::VectorXf::Zero(kDescentFeaturesPerPoint);
+  EXPECT_THROW(serializeModel(model), Error);
 }
 
 // Version 6: the stages' shape weights are stored after each stage's bias and read back exactly;

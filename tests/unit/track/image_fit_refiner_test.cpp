@@ -344,14 +344,14 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
 // makes it 0.92, and its probability and source say so. The tracker's frames keep the check's.
 TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
   DescentCheck check;
-  EXPECT_EQ(photoFitProbability(check, 0.8, 10.0), 0.8);  // no curves: the check's own
-  check.photoFitCurves = {{0.0, 1.0, -2.0}, {60.0, 1.0, 1.0}};
+  EXPECT_EQ(nearestPhotoFitCurve(check, 10.0), nullptr);  // no curves: the check's own
+  check.photoFitCurves = {{0.0, 1.0, -2.0, {}, {}}, {60.0, 1.0, 1.0, {}, {}}};
   const double logOddsOf08 = std::log(0.8 / 0.2);
-  EXPECT_NEAR(photoFitProbability(check, 0.8, -20.0), 1.0 / (1.0 + std::exp(-(logOddsOf08 - 2.0))),
-              1e-12);
-  EXPECT_NEAR(photoFitProbability(check, 0.8, 50.0), 1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))),
-              1e-12);
-  EXPECT_TRUE(std::isnan(photoFitProbability(check, std::nan(""), 0.0)));
+  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check, -20.0), 0.8),
+              1.0 / (1.0 + std::exp(-(logOddsOf08 - 2.0))), 1e-12);
+  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check, 50.0), 0.8),
+              1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))), 1e-12);
+  EXPECT_TRUE(std::isnan(photoFitProbability(check.photoFitCurves[0], std::nan(""))));
 
   ClmModel model = fitTestModel();
   model.refiner = knownRefiner();
@@ -360,7 +360,7 @@ TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
   savePhoto(dir.path(), "face", scene);
   const auto fitWithCurve = [&](double offset) {
     ClmModel calibrated = model;
-    calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, offset}};
+    calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, offset, {}, {}}};
     ImageFitSettings settings;
     settings.tiltSteps = 0;
     return ImageFitter(calibrated, settings).fitFile(dir / "face.png");
@@ -376,12 +376,56 @@ TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
   EXPECT_NEAR(trusted.fit->probability, 1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))), 1e-6);
 
   ClmModel calibrated = model;
-  calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -2.0}};
+  calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -2.0, {}, {}}};
   Tracker tracker(calibrated, scene.camera, TrackerSettings{});
   tracker.setState(scene.truth, -1);
   const TrackStep frame = tracker.track(scene.image, 0, 0.0);
   ASSERT_TRUE(frame.row.success) << toString(frame.failure);
   EXPECT_NEAR(frame.row.confidence, kKnownCheckProbability, 1e-6);
+}
+
+// A curve's image term (model format 10) reads the photo at the fit's points with the layout of
+// the views of its |yaw|: the same fit, whose check log-odds the curve's offset cancels (0.5),
+// is kept when the image weights point along its features and rejected when they point away; a
+// fit whose features cannot be read is given 0.
+TEST(ImageFitRefiner, APhotoFitCurvesImageTermReadsThePhotoAtTheFitsPoints) {
+  ClmModel model = fitTestModel();
+  model.refiner = knownRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead, 70.0);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  ImageFitSettings settings;
+  settings.tiltSteps = 0;
+  const double logOddsOf08 = std::log(0.8 / 0.2);
+  ClmModel calibrated = model;
+  calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -logOddsOf08, {}, {}}};
+  const ImageFitOutcome plain = ImageFitter(calibrated, settings).fitFile(dir / "face.png");
+  ASSERT_TRUE(plain.fit);
+  EXPECT_NEAR(plain.fit->probability, 0.5, 1e-6);
+  ASSERT_GE(plain.fit->view, 0);
+  const Eigen::VectorXf features =
+      photoFitFeatures(model, plain.fit->view, readImage(dir / "face.png"), plain.fit->points);
+  ASSERT_GT(features.size(), 0);
+  const auto fitWithImageTerm = [&](float sign) {
+    ClmModel judged = calibrated;
+    PhotoFitCurve& curve = judged.refiner.check.photoFitCurves[0];
+    curve.imageMean = Eigen::VectorXf::Zero(features.size());
+    curve.imageWeights = sign * 2.0f * features / features.squaredNorm();  // a score of +-2
+    return ImageFitter(judged, settings).fitFile(dir / "face.png");
+  };
+  const ImageFitOutcome kept = fitWithImageTerm(1.0f);
+  ASSERT_TRUE(kept.fit);
+  EXPECT_EQ(kept.status, ImageFitStatus::Ok) << kept.message;
+  EXPECT_NEAR(kept.fit->probability, 1.0 / (1.0 + std::exp(-2.0)), 1e-4);
+  EXPECT_EQ(kept.fit->probabilitySource, ProbabilitySource::PhotoFitCurve);
+  const ImageFitOutcome rejected = fitWithImageTerm(-1.0f);
+  ASSERT_TRUE(rejected.fit);
+  EXPECT_EQ(rejected.status, ImageFitStatus::Rejected) << rejected.message;
+  EXPECT_NEAR(rejected.fit->probability, 1.0 / (1.0 + std::exp(2.0)), 1e-4);
+
+  PhotoFitCurve curve{0.0, 1.0, 0.0, Eigen::VectorXf::Zero(features.size()),
+                      Eigen::VectorXf::Ones(features.size())};
+  EXPECT_EQ(photoFitProbability(curve, 0.8, Eigen::VectorXf()), 0.0);
 }
 
 // A head tilted 40 degrees: the detectors find no upright face (or none whose fit passes the
