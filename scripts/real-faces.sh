@@ -127,6 +127,7 @@ for img in $(ls "$TEST"/*.jpg | tail -n "$ROLLZOOM"); do
   track_sequence "rz_$(basename "${img%.jpg}")" "$img" "$n" --photo-roll 45 --photo-zoom 0.6:1.6
 done
 for group in image rz_image; do
+  compgen -G "$OUT/tracks/${group}_*.csv" > /dev/null || continue  # SEQUENCES=0 or ROLLZOOM=0
   truths=(); preds=(); detections=0
   for tracks in "$OUT"/tracks/${group}_*.csv; do
     stem=$(basename "${tracks%.csv}")
