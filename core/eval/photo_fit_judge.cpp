@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "core/common/logistic_curve.hpp"
 #include "core/eval/detail/confidence_roc.hpp"
@@ -83,7 +84,9 @@ PhotoFitCurve learnPhotoFitJudge(double viewYawDeg, const PhotoFitSample& sample
   const Eigen::MatrixXd rows = sample.features.cast<double>();
   const auto n = static_cast<std::size_t>(rows.rows());
   // Cross-validation: every kFolds-th fit held out in turn, the components learnt without it.
-  std::array<double, kRelativePenalties.size()> area{};
+  // Per fold that has both kinds: each penalty's held-out ROC area, and the log-odds' alone.
+  std::vector<std::array<double, kRelativePenalties.size()>> area;
+  std::vector<double> checkArea;
   for (int fold = 0; fold < kFolds; ++fold) {
     std::vector<Eigen::Index> learn, held;
     for (std::size_t i = 0; i < n; ++i)
@@ -110,16 +113,39 @@ PhotoFitCurve learnPhotoFitJudge(double viewYawDeg, const PhotoFitSample& sample
     const Components c = componentsOf(learnRows);
     const Eigen::MatrixXd learnInputs = inputsOf(learnRows, learnLo, c);
     const Eigen::MatrixXd heldInputs = inputsOf(heldRows, heldLo, c);
+    auto& areas = area.emplace_back();
     for (std::size_t p = 0; p < kRelativePenalties.size(); ++p) {
       const double penalty =
           kRelativePenalties[p] * c.meanVariance * static_cast<double>(learn.size());
-      area[p] += rocArea(heldInputs * fitJudge(learnInputs, learnRight, penalty), heldRight);
+      areas[p] = rocArea(heldInputs * fitJudge(learnInputs, learnRight, penalty), heldRight);
     }
+    checkArea.push_back(rocArea(
+        Eigen::Map<const Eigen::VectorXd>(heldLo.data(), static_cast<Eigen::Index>(heldLo.size())),
+        heldRight));
   }
-  // The best area; among equal ones the strongest penalty.
+  // The best mean area; among equal ones the strongest penalty.
+  const auto folds = static_cast<double>(area.size());
+  const auto meanArea = [&](std::size_t p) {
+    double sum = 0.0;
+    for (const auto& areas : area) sum += areas[p];
+    return sum / folds;
+  };
   std::size_t best = 0;
-  for (std::size_t p = 1; p < area.size(); ++p)
-    if (area[p] >= area[best]) best = p;
+  for (std::size_t p = 1; p < kRelativePenalties.size(); ++p)
+    if (meanArea(p) >= meanArea(best)) best = p;
+  // The image term is kept only where it ranks the held-out fits better than the check's
+  // log-odds alone by more than one standard error of the folds' paired differences (the
+  // one-standard-error rule: the simpler judge unless the data show the other is better). Near
+  // the frontal view the check already reads the face and the term is mostly noise.
+  double gain = 0.0, spread = 0.0;
+  for (std::size_t f = 0; f < area.size(); ++f) gain += (area[f][best] - checkArea[f]) / folds;
+  for (std::size_t f = 0; f < area.size(); ++f)
+    spread += std::pow(area[f][best] - checkArea[f] - gain, 2.0);
+  const double standardError = folds > 1 ? std::sqrt(spread / (folds - 1) / folds) : 0.0;
+  if (area.size() < 2 || gain <= standardError) {
+    const LogisticCurve alone = fitLogisticCurve(sample.logOdds, sample.right);
+    return {viewYawDeg, alone.slope, alone.offset, {}, {}};
+  }
 
   const Components c = componentsOf(rows);
   const Eigen::MatrixXd inputs = inputsOf(rows, sample.logOdds, c);

@@ -36,7 +36,7 @@ struct DescentStage {
 // features at the landmarks the view sees, core/refine/view_check.hpp), learnt with the curve from
 // the same fits: p = 1 / (1 + exp(-(slope * log(c / (1 - c)) + offset + imageWeights . (f -
 // imageMean)))). On AFLW's test faces at |yaw| 60-90 it took the faces fitted right from 90 to 106
-// and those reported although off the face from 42 to 35 (docs/fitting.md#the-image-term).
+// and those reported although off the face from 42 to 36 (docs/fitting.md#the-image-term).
 struct PhotoFitCurve {
   double viewYawDeg = 0.0;  // |yaw| of the views it judges (a view and its mirror image alike)
   double slope = 1.0, offset = 0.0;         // on the check's log-odds log(c / (1 - c))

@@ -23,7 +23,9 @@ struct PhotoFitSample {
 };
 
 // The curve of `viewYawDeg` from the sample; its image weights in the features' own space (the
-// components folded back), so that judging a fit needs no projection. Needs both labels.
+// components folded back), so that judging a fit needs no projection. Without an image term (the
+// curve of the log-odds alone) when cross-validation does not show the term ranking held-out fits
+// better by more than one standard error. Needs both labels.
 PhotoFitCurve learnPhotoFitJudge(double viewYawDeg, const PhotoFitSample& sample);
 
 }  // namespace clm3d

@@ -65,6 +65,7 @@ TEST(PhotoFitJudge, FollowsTheCheckWhenTheImageSaysNothing) {
   const PhotoFitCurve curve = learnPhotoFitJudge(0.0, sampleOf(300, 0.0, 1.5, 3));
   const PhotoFitSample fresh = sampleOf(400, 0.0, 1.5, 4);
   const PhotoFitCurve checkOnly{0.0, 1.0, 0.0, {}, {}};
+  EXPECT_FALSE(curve.hasImageTerm()) << "cross-validation shows no gain from the image";
   EXPECT_GT(curve.slope, 0.5);
   EXPECT_GT(rocOf(curve, fresh), rocOf(checkOnly, fresh) - 0.03);
 }
