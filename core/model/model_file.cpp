@@ -79,6 +79,7 @@ class Reader {
   void readInto(Scalar* destination, std::size_t count) {
     using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
     require(count * sizeof(Scalar));
+    if (count == 0) return;  // an empty array (a curve without an image term): no bytes, no copy
     if constexpr (std::endian::native == std::endian::little) {  // the file's order: one copy
       std::memcpy(destination, bytes_.data() + position_, count * sizeof(Scalar));
       position_ += count * sizeof(Scalar);
