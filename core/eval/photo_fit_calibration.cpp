@@ -60,7 +60,8 @@ std::vector<PhotoFitCurve> learnCurves(const std::vector<JudgedFit>& fits,
     // The fits whose features were read, all of one length (one layout per |yaw|).
     std::vector<const JudgedFit*> read;
     for (const JudgedFit* fit : group) {
-      if (fit->features.size() > 0 && fit->features.size() == group.front()->features.size())
+      if (fit->features.size() > 0 &&
+          (read.empty() || fit->features.size() == read.front()->features.size()))
         read.push_back(fit);
     }
     const auto readRight =
@@ -91,9 +92,7 @@ std::vector<PhotoFitCurve> learnCurves(const std::vector<JudgedFit>& fits,
 
 // The probability `curves` give a fit (its check's, when none applies).
 double judged(const std::vector<PhotoFitCurve>& curves, const JudgedFit& fit) {
-  DescentCheck check;
-  check.photoFitCurves = curves;
-  const PhotoFitCurve* curve = nearestPhotoFitCurve(check, fit.viewYawDeg);
+  const PhotoFitCurve* curve = nearestPhotoFitCurve(curves, fit.viewYawDeg);
   const double own = LogisticCurve{}(fit.logOdds);
   return curve == nullptr ? own : photoFitProbability(*curve, own, fit.features);
 }

@@ -32,10 +32,11 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
   return checkProbability(check, features);
 }
 
-const PhotoFitCurve* nearestPhotoFitCurve(const DescentCheck& check, double viewYawDeg) {
+const PhotoFitCurve* nearestPhotoFitCurve(const std::vector<PhotoFitCurve>& curves,
+                                          double viewYawDeg) {
   const double yaw = std::abs(viewYawDeg);
   const PhotoFitCurve* nearest = nullptr;
-  for (const PhotoFitCurve& curve : check.photoFitCurves) {
+  for (const PhotoFitCurve& curve : curves) {
     if (nearest == nullptr ||
         std::abs(curve.viewYawDeg - yaw) < std::abs(nearest->viewYawDeg - yaw))
       nearest = &curve;

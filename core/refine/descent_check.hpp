@@ -28,8 +28,9 @@ double checkInRegion(const DescentRefiner& refiner, const cv::Mat& regionGrey,
                      const Eigen::Matrix2Xd& points);
 
 // The photo-fit curve (PhotoFitCurve, core/model/descent_refiner.hpp) of the |yaw| nearest
-// `viewYawDeg`'s; null when the check has none.
-const PhotoFitCurve* nearestPhotoFitCurve(const DescentCheck& check, double viewYawDeg);
+// `viewYawDeg`'s (a check's photoFitCurves); null when there are none.
+const PhotoFitCurve* nearestPhotoFitCurve(const std::vector<PhotoFitCurve>& curves,
+                                          double viewYawDeg);
 
 // The probability that a photo's fit is right by `curve`, from its check probability
 // `checkProbability` (returned as it is when not finite) and, for a curve with an image term, the

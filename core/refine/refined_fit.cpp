@@ -35,7 +35,7 @@ double photoFitProbability(const ClmModel& model, const FitResult& fit, const cv
       fit.view >= static_cast<int>(model.views.size()))
     return fit.probability;
   const PhotoFitCurve* curve = nearestPhotoFitCurve(
-      model.refiner.check, model.views[static_cast<std::size_t>(fit.view)].yawDeg);
+      model.refiner.check.photoFitCurves, model.views[static_cast<std::size_t>(fit.view)].yawDeg);
   if (curve == nullptr) return fit.probability;
   const Eigen::VectorXf features = curve->hasImageTerm()
                                        ? photoFitFeatures(model, fit.view, image, fit.points)

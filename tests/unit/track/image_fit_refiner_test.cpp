@@ -344,12 +344,13 @@ TEST(ImageFitRefiner, AFitTheCheckRejectsIsReportedAndNotWritten) {
 // makes it 0.92, and its probability and source say so. The tracker's frames keep the check's.
 TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
   DescentCheck check;
-  EXPECT_EQ(nearestPhotoFitCurve(check, 10.0), nullptr);  // no curves: the check's own
+  EXPECT_EQ(nearestPhotoFitCurve(check.photoFitCurves, 10.0),
+            nullptr);  // no curves: the check's own
   check.photoFitCurves = {{0.0, 1.0, -2.0, {}, {}}, {60.0, 1.0, 1.0, {}, {}}};
   const double logOddsOf08 = std::log(0.8 / 0.2);
-  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check, -20.0), 0.8),
+  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check.photoFitCurves, -20.0), 0.8),
               1.0 / (1.0 + std::exp(-(logOddsOf08 - 2.0))), 1e-12);
-  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check, 50.0), 0.8),
+  EXPECT_NEAR(photoFitProbability(*nearestPhotoFitCurve(check.photoFitCurves, 50.0), 0.8),
               1.0 / (1.0 + std::exp(-(logOddsOf08 + 1.0))), 1e-12);
   EXPECT_TRUE(std::isnan(photoFitProbability(check.photoFitCurves[0], std::nan(""))));
 
