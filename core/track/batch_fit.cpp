@@ -144,14 +144,18 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
           mixKey(settings_.startOffsetSeed, std::hash<std::string>{}(image.stem().string())));
     };
     const auto begin = std::chrono::steady_clock::now();
+    // Every search's fit is refined and judged as a photo's fit: by a model calibrated on photo
+    // fits (`clm3d calibrate`, training's calibration_photos), through the curve of the fit's view
+    // with its image term, so that the start grid, the faces, the tilted copies, the wider search
+    // and the neighbouring views compare fits on the one calibrated probability, which compares
+    // views; without curves, on the check's.
     FitFinisher finish;
     if (settings_.refine) {
-      finish = [this](FitResult& fit) { refineFit(*model_, lastImage_, fit); };
+      finish = [this](FitResult& fit) {
+        refineFit(*model_, lastImage_, fit);
+        judgeAsPhotoFit(*model_, fit, lastImage_);
+      };
     }
-    // The one probability judges a photo's fit as it judges a tracked frame; a model calibrated on
-    // photo fits (`clm3d calibrate`) judges by its curve of the fit's view. The search's own
-    // choices (the start grid, the wider search, the refiner runs) keep the check's scale they
-    // were chosen on.
     const auto passes = [this](const FitResult& result) {
       return photoFitProbability(*model_, result, lastImage_) >= settings_.minProbability;
     };

@@ -29,11 +29,13 @@ struct FaceSearchSettings {
   // starts) was chosen on 100 LFPW training photos held out of the model: mean error from the
   // detector 0.076 -> 0.070 (fastncc), 0.097 -> 0.087 (rlms); steps of 0.15 or 0.20, two steps, and
   // rescaled starts did no better (docs/initialisation.md). Used by `clm3d fit` and by the tracker
-  // on the frames it detects. The grid is searched only when the start's own fit has a confidence
-  // below 0.9999 (for a model trained with photos, the point check's probability, which is above
-  // that for about three photos in four): on the 100 held-out photos the median fit went from 35-40
-  // to 11.7 ms and the mean error from 0.0426 to 0.0430 (docs/real-faces.md#time-a-photo).
-  StartSearchSettings startSearch{1, 0.10, {}, 0.9999};
+  // on the frames it detects. The grid is searched only when the start's own fit has a probability
+  // below 0.996 (a photo's: its photo-fit probability on a calibrated model, where 0.996 at |yaw| 0
+  // is the check's 0.9999 of the real-face model's curve; else the point check's, above 0.9999 for
+  // about three photos in four): on the 100 held-out photos the median fit went from 35-40 to 11.7
+  // ms and the mean error from 0.0426 to 0.0430 at the check's 0.9999
+  // (docs/real-faces.md#time-a-photo).
+  StartSearchSettings startSearch{1, 0.10, {}, 0.996};
   // The detector's faces searched, best first, until one's fit does not fail: a false detection
   // ranked first (a mouth, a pattern on a shirt) or a second person no longer costs the face. On
   // the LFPW photo sequences a frame of image_0016 was lost to the other person's box
@@ -86,13 +88,15 @@ struct FaceSearchSettings {
   // 0.08 of the face box) per |yaw| band 362 / 220 / 63 -> 362 / 243 / 109, the 224 LFPW test
   // photos unchanged (docs/initialisation.md#profile-boxes-placed-as-real-turned-faces).
   bool turnedPlacements = true;
-  // Unsure fits: when the kept fit's check probability is below this, it is searched again from
-  // the grid of widerSearch around it (moved and rescaled copies of it), and the more confident fit
+  // Unsure fits: when the kept fit's probability is below this, it is searched again from the
+  // grid of widerSearch around it (moved and rescaled copies of it), and the more probable fit
   // kept (FaceSearch::widerBelow): a face the detector boxed too small or too large. On 100 LFPW
   // training photos held out of the model, with every detector start rescaled by 1.3 or 1 / 1.3,
-  // the mean error went from 0.069 to 0.054 at 0.97 (0.059 at 0.9); from the detector's own
-  // starts, 0.0458 to 0.0456 (docs/real-faces.md). 0 = never.
-  double widerSearchBelow = 0.97;
+  // the mean error went from 0.069 to 0.054 at the check's 0.97 (0.059 at 0.9); from the
+  // detector's own starts, 0.0458 to 0.0456 (docs/real-faces.md). A calibrated model's photo fits
+  // compare their photo-fit probability, where 0.62 at |yaw| 0 is the check's 0.97
+  // (docs/fitting.md#one-probability-through-the-photo-search). 0 = never.
+  double widerSearchBelow = 0.62;
   StartSearchSettings widerSearch = FaceSearch{}.wider;
   // The kept fit's points are refined this many times, from themselves and from copies moved
   // around them, and the runs averaged (RefinerStarts; about 1 ms a run). The tracker refines once.
@@ -101,8 +105,9 @@ struct FaceSearchSettings {
   double refineSpread = RefinerStarts{}.spread;
   // Those runs are made only when the kept fit's check probability is below this: a fit the check
   // doubts. With the start grid's 0.9999 on the 100 held-out photos: median fit 11.7 -> 3.5-4.2 ms,
-  // mean error 0.0430 -> 0.0429 (docs/real-faces.md#time-a-photo). 0 = always.
-  double refineRunsBelow = 0.9999;
+  // mean error 0.0430 -> 0.0429 (docs/real-faces.md#time-a-photo); 0.996 on a calibrated model's
+  // photo-fit probability, as the start grid's. 0 = always.
+  double refineRunsBelow = 0.996;
 
   bool operator==(const FaceSearchSettings&) const = default;
 };

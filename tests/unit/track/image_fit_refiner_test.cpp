@@ -395,8 +395,14 @@ TEST(ImageFitRefiner, APhotoFitCurvesImageTermReadsThePhotoAtTheFitsPoints) {
   const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead, 70.0);
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);
+  // One search, one refinement: the same points judged by each curve.
   ImageFitSettings settings;
   settings.tiltSteps = 0;
+  settings.startSearch.steps = 0;
+  settings.widerSearchBelow = 0.0;
+  settings.viewSearchBelow = 0.0;
+  settings.turnedPlacements = false;
+  settings.refineRuns = 1;
   const double logOddsOf08 = std::log(0.8 / 0.2);
   ClmModel calibrated = model;
   calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -logOddsOf08, {}, {}}};
@@ -427,6 +433,49 @@ TEST(ImageFitRefiner, APhotoFitCurvesImageTermReadsThePhotoAtTheFitsPoints) {
   PhotoFitCurve curve{0.0, 1.0, 0.0, Eigen::VectorXf::Zero(features.size()),
                       Eigen::VectorXf::Ones(features.size())};
   EXPECT_EQ(photoFitProbability(curve, 0.8, Eigen::VectorXf()), 0.0);
+}
+
+// The photo search compares its candidates (here the start grid's) on the photo-fit probability
+// it judges with, not on the check's: an image term that scores the start's own fit down makes the
+// search keep another start's fit, more probable by the curve.
+TEST(ImageFitRefiner, ThePhotoSearchChoosesItsFitByThePhotoFitProbability) {
+  ClmModel model = fitTestModel();
+  model.refiner = knownRefiner();
+  const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead, 70.0);
+  const test::TempDir dir;
+  savePhoto(dir.path(), "face", scene);
+  ImageFitSettings single;
+  single.tiltSteps = 0;
+  single.startSearch.steps = 0;
+  single.widerSearchBelow = 0.0;
+  single.viewSearchBelow = 0.0;
+  single.turnedPlacements = false;
+  single.refineRuns = 1;
+  ClmModel calibrated = model;
+  calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, 0.0, {}, {}}};
+  const ImageFitOutcome plain = ImageFitter(calibrated, single).fitFile(dir / "face.png");
+  ASSERT_TRUE(plain.fit);
+  const cv::Mat image = readImage(dir / "face.png");
+  const Eigen::VectorXf features =
+      photoFitFeatures(model, plain.fit->view, image, plain.fit->points);
+  ASSERT_GT(features.size(), 0);
+  PhotoFitCurve& curve = calibrated.refiner.check.photoFitCurves[0];
+  curve.imageMean = features;  // the start's own fit reads exactly the mean: no image score
+  curve.imageWeights = -4.0f * features / features.norm();
+
+  ImageFitSettings grid = single;
+  grid.startSearch.steps = 1;
+  grid.startSearch.onlyBelow = 0.0;  // the whole grid
+  const ImageFitOutcome chosen = ImageFitter(calibrated, grid).fitFile(dir / "face.png");
+  ASSERT_TRUE(chosen.fit);
+  EXPECT_EQ(chosen.fit->probabilitySource, ProbabilitySource::PhotoFitCurve);
+  // The start's own fit by the curve with the term: its check's probability (the curve without
+  // the term is the identity), its image score 0.
+  const double startsOwnJudged = photoFitProbability(curve, plain.fit->probability, features);
+  EXPECT_GT(chosen.fit->probability, startsOwnJudged + 0.01)
+      << "the grid's kept fit is judged more probable than the start's own fit";
+  EXPECT_GT((chosen.fit->points - plain.fit->points).cwiseAbs().maxCoeff(), 0.5)
+      << "another start's fit is kept";
 }
 
 // A head tilted 40 degrees: the detectors find no upright face (or none whose fit passes the
