@@ -122,11 +122,12 @@ std::vector<TrackerOption> buildOptions() {
   options.push_back(real("start-shift", "Start grid spacing", "Search", search, 0.01, 0.5, 2,
                          "spacing of that grid in eye distances of the placed start",
                          [](S& s) -> double& { return s.startSearch.shift; }));
-  options.push_back(real("start-grid-below", "Start grid below (confidence)", "Search", search, 0.0,
-                         1.0, 5,
+  options.push_back(real("start-grid-below", "Start grid below (probability)", "Search", search,
+                         0.0, 1.0, 5,
                          "the rest of that grid is searched only when the fit from the "
-                         "detector's start has a confidence below this (the point check's "
-                         "probability for a model trained with photos); 0 = the whole grid always",
+                         "detector's start has a probability below this (a photo's photo-fit "
+                         "probability on a calibrated model, else the point check's for a model "
+                         "trained with photos); 0 = the whole grid always",
                          [](S& s) -> double& { return s.startSearch.onlyBelow; }));
   options.push_back(integer("faces-tried", "Faces tried", "Search", search, 1, 20,
                             "detected faces searched, best first, until one's fit does not fail "
@@ -147,11 +148,12 @@ std::vector<TrackerOption> buildOptions() {
       "when no fit passes after the upright faces and the tilted copies, do not search the "
       "profile boxes again placed as real turned faces sit in them (docs/initialisation.md)",
       [](S& s) -> bool& { return s.turnedPlacements; }, true));
-  options.push_back(real("wider-search-below", "Wider search below (check)", "Search", photo, 0.0,
-                         1.0, 2,
-                         "a fit whose point check gives a probability below this is searched "
-                         "again from copies of it moved by --wider-shift and scaled by "
-                         "--wider-sizes, the more confident fit kept (0 = never)",
+  options.push_back(real("wider-search-below", "Wider search below (probability)", "Search", photo,
+                         0.0, 1.0, 2,
+                         "a fit whose probability (the photo-fit probability on a calibrated "
+                         "model, else the point check's) is below this is searched again from "
+                         "copies of it moved by --wider-shift and scaled by --wider-sizes, the "
+                         "more probable fit kept (0 = never)",
                          [](S& s) -> double& { return s.widerSearchBelow; }));
   options.push_back(real("wider-shift", "Wider search spacing", "Search", photo, 0.01, 0.5, 2,
                          "spacing of the wider search's 3x3 grid of moved copies, in eye "
@@ -175,10 +177,10 @@ std::vector<TrackerOption> buildOptions() {
                             "copies of them moved --refine-spread around (1 = from the fit's "
                             "points alone)",
                             [](S& s) -> int& { return s.refineRuns; }));
-  options.push_back(real("refine-runs-below", "Refiner runs below (check)", "Search", photo, 0.0,
-                         1.0, 5,
-                         "those runs are made only when the kept fit's check probability is "
-                         "below this (0 = always)",
+  options.push_back(real("refine-runs-below", "Refiner runs below (probability)", "Search", photo,
+                         0.0, 1.0, 5,
+                         "those runs are made only when the kept fit's probability (as for "
+                         "--wider-search-below) is below this (0 = always)",
                          [](S& s) -> double& { return s.refineRunsBelow; }));
   options.push_back(real("refine-spread", "Refiner runs' spread", "Search", photo, 0.0, 0.5, 3,
                          "how far those copies are moved, in eye distances",
