@@ -99,6 +99,13 @@ double judged(const std::vector<PhotoFitCurve>& curves, const JudgedFit& fit) {
 
 }  // namespace
 
+ImageFitSettings searchedAsCalibrated(ImageFitSettings fit) {
+  fit.startSearch.onlyBelow = 0.9999;
+  fit.widerSearchBelow = 0.97;
+  fit.refineRunsBelow = 0.9999;
+  return fit;
+}
+
 PhotoFitCalibration calibratePhotoFits(const ClmModel& model,
                                        const std::vector<std::filesystem::path>& images,
                                        const std::vector<std::filesystem::path>& truths,

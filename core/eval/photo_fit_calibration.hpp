@@ -20,8 +20,17 @@
 
 namespace clm3d {
 
+// `fit` with the photo search's effort thresholds (the start grid, the wider search, the refiner
+// runs), which a calibrated model's photo fits read on their photo-fit probability, set to the
+// point check's values the defaults stand for at |yaw| 0 (docs/fitting.md#one-probability-
+// through-the-photo-search): 0.9999, 0.97 and 0.9999 for 0.996, 0.62 and 0.996. The calibration
+// fits its photos with the model uncalibrated, whose fits carry the check's probability; so they
+// are searched with the effort of the calibrated pipeline it learns to judge.
+ImageFitSettings searchedAsCalibrated(ImageFitSettings fit);
+
 struct PhotoFitCalibrationSettings {
-  ImageFitSettings fit;      // the pipeline calibrated: clm3d fit's defaults
+  // The pipeline calibrated: clm3d fit's defaults, searched as the calibrated pipeline searches.
+  ImageFitSettings fit = searchedAsCalibrated(ImageFitSettings{});
   double rightBelow = 0.08;  // error over the truth's face box
   // A |yaw| of views gets a curve from at least this many right and this many wrong fits; the
   // others take the curve of the nearest |yaw| that has one.

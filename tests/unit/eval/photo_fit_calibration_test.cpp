@@ -62,7 +62,7 @@ TEST(PhotoFitCalibration, LearnsTheShareOfRightFitsPerViewFromThePipelinesOwnFit
   // probabilities that sum to the right ones: over the same fits (the pipeline is deterministic),
   // the calibrated probabilities average 6 of 8.
   EXPECT_FALSE(calibration.curves.front().hasImageTerm()) << "8 fits are fewer than 100";
-  ImageFitter fitter(model, ImageFitSettings{});
+  ImageFitter fitter(model, settings.fit);  // the calibration's own pipeline
   double sum = 0.0;
   for (const fs::path& image : images) {
     const ImageFitOutcome outcome = fitter.fitFile(image);

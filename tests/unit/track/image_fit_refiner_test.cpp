@@ -385,6 +385,21 @@ TEST(ImageFitRefiner, APhotoFitCurveJudgesAPhotosFitByItsView) {
   EXPECT_NEAR(frame.row.confidence, kKnownCheckProbability, 1e-6);
 }
 
+// A still image's fit from one search and one refinement: the detector's start alone, no tilted
+// copies, wider search, neighbouring views or second placements.
+namespace {
+ImageFitSettings oneSearch() {
+  ImageFitSettings settings;
+  settings.tiltSteps = 0;
+  settings.startSearch.steps = 0;
+  settings.widerSearchBelow = 0.0;
+  settings.viewSearchBelow = 0.0;
+  settings.turnedPlacements = false;
+  settings.refineRuns = 1;
+  return settings;
+}
+}  // namespace
+
 // A curve's image term (model format 10) reads the photo at the fit's points with the layout of
 // the views of its |yaw|: the same fit, whose check log-odds the curve's offset cancels (0.5),
 // is kept when the image weights point along its features and rejected when they point away; a
@@ -396,13 +411,7 @@ TEST(ImageFitRefiner, APhotoFitCurvesImageTermReadsThePhotoAtTheFitsPoints) {
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);
   // One search, one refinement: the same points judged by each curve.
-  ImageFitSettings settings;
-  settings.tiltSteps = 0;
-  settings.startSearch.steps = 0;
-  settings.widerSearchBelow = 0.0;
-  settings.viewSearchBelow = 0.0;
-  settings.turnedPlacements = false;
-  settings.refineRuns = 1;
+  const ImageFitSettings settings = oneSearch();
   const double logOddsOf08 = std::log(0.8 / 0.2);
   ClmModel calibrated = model;
   calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, -logOddsOf08, {}, {}}};
@@ -444,13 +453,7 @@ TEST(ImageFitRefiner, ThePhotoSearchChoosesItsFitByThePhotoFitProbability) {
   const FitScene scene = makeFitScene(model, 0.0, 2.0, kHeldOutHead, 70.0);
   const test::TempDir dir;
   savePhoto(dir.path(), "face", scene);
-  ImageFitSettings single;
-  single.tiltSteps = 0;
-  single.startSearch.steps = 0;
-  single.widerSearchBelow = 0.0;
-  single.viewSearchBelow = 0.0;
-  single.turnedPlacements = false;
-  single.refineRuns = 1;
+  const ImageFitSettings single = oneSearch();
   ClmModel calibrated = model;
   calibrated.refiner.check.photoFitCurves = {{0.0, 1.0, 0.0, {}, {}}};
   const ImageFitOutcome plain = ImageFitter(calibrated, single).fitFile(dir / "face.png");
