@@ -73,7 +73,9 @@ FitResult fitFromBestFace(Fitter& fitter, const ClmModel& model, const cv::Mat& 
     int made = 0;
     std::optional<FitResult> fit;
     try {
-      fit = fitFromBestStart(fitter, model, image, start, search.starts, &made, search.finish);
+      StartSearchSettings starts = search.starts;
+      if (box.profile && search.profileSteps >= 0) starts.steps = search.profileSteps;
+      fit = fitFromBestStart(fitter, model, image, start, starts, &made, search.finish);
     } catch (const InputError& e) {
       if (!firstError) firstError = e;
     }

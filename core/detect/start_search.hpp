@@ -89,6 +89,9 @@ enum class BoxPlacement { Calibrated, TurnedFace };
 struct FaceSearch {
   int maxFaces = 1;
   StartSearchSettings starts;
+  // The start grid's steps for a profile box's start (FaceBox::profile: a turned face, whose box
+  // places its start less surely); -1: starts.steps, as for frontal boxes.
+  int profileSteps = -1;
   std::function<bool(const FitResult&)> accepted;  // empty: the first face's fit is kept
   std::function<FitState(const FitState&)> placed;
   FitFinisher finish;

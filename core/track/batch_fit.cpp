@@ -165,6 +165,7 @@ ImageFitOutcome ImageFitter::fitFile(const fs::path& image, const fs::path& star
       FaceSearch search;
       search.maxFaces = settings_.facesTried;
       search.starts = settings_.startSearch;
+      search.profileSteps = settings_.profileStartSteps;
       search.accepted = passes;
       search.placed = placed;
       search.finish = finish;

@@ -135,6 +135,11 @@ std::vector<TrackerOption> buildOptions() {
                             "confident kept; without a check the best face only); 1 = the best "
                             "face only",
                             [](S& s) -> int& { return s.facesTried; }));
+  options.push_back(integer("profile-start-grid", "Start grid steps, profile boxes", "Search",
+                            photo, 0, 3,
+                            "a face the detector boxed as a profile is searched from a (2N+1)^2 "
+                            "grid of starts around its box's (docs/initialisation.md)",
+                            [](S& s) -> int& { return s.profileStartSteps; }));
   options.push_back(integer("tilt-steps", "Tilted-face turns", "Search", photo, 0, 6,
                             "when no upright face's fit passes the point refiner's check, detect "
                             "in copies of the image turned by this many steps each way and search "

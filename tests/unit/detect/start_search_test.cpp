@@ -135,6 +135,35 @@ TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
   EXPECT_EQ(kept->probability, first.probability);
 }
 
+// A profile box's start is searched from its own grid (FaceSearch::profileSteps), a frontal box's
+// from the common one; -1 leaves profile boxes on the common grid.
+TEST(FaceSearch, AProfileBoxsStartIsSearchedFromItsOwnGrid) {
+  const ClmModel& model = test::fitTestModel();
+  const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
+  Fitter fitter(model, scene.camera);
+  const Eigen::Vector2d low = scene.truthPoints.rowwise().minCoeff();
+  const Eigen::Vector2d high = scene.truthPoints.rowwise().maxCoeff();
+  const double side = 1.3 * (high - low).maxCoeff();
+  const Eigen::Vector2d centre = 0.5 * (low + high);
+  FaceBox profile;
+  profile.box = cv::Rect2d(centre.x() - 0.5 * side, centre.y() - 0.5 * side, side, side);
+  profile.profile = true;
+  FaceBox frontal = profile;
+  frontal.profile = false;
+  FaceSearch search;
+  search.starts = StartSearchSettings{1, 0.1, {}, 0.0};  // the whole grid, always
+  search.profileSteps = 2;
+  const auto searchesFor = [&](const FaceBox& box, const FaceSearch& how) {
+    int searches = 0;
+    fitFromBestFace(fitter, model, scene.image, {box}, how, nullptr, &searches);
+    return searches;
+  };
+  EXPECT_EQ(searchesFor(profile, search), 25);
+  EXPECT_EQ(searchesFor(frontal, search), 9);
+  search.profileSteps = -1;
+  EXPECT_EQ(searchesFor(profile, search), 9);
+}
+
 // A doubted fit is searched from the neighbouring views, unless its probability does not compare
 // views (the point check's, learnt on near-frontal photos; the experts' raw response on one curve)
 // and that was not asked for.
