@@ -16,6 +16,19 @@ double errorOf(const FitResult& fit, const test::FitScene& scene) {
   return test::meanPointError(fit.points, scene.truthPoints) / scene.interOcular;
 }
 
+// The cascade's profile box (not mirrored: a face turned to the image's left) around the scene's
+// face: a square 1.3 times the truth's points' larger side.
+FaceBox profileBoxAround(const test::FitScene& scene) {
+  const Eigen::Vector2d low = scene.truthPoints.rowwise().minCoeff();
+  const Eigen::Vector2d high = scene.truthPoints.rowwise().maxCoeff();
+  const double side = 1.3 * (high - low).maxCoeff();
+  const Eigen::Vector2d centre = 0.5 * (low + high);
+  FaceBox profile;
+  profile.box = cv::Rect2d(centre.x() - 0.5 * side, centre.y() - 0.5 * side, side, side);
+  profile.profile = true;
+  return profile;
+}
+
 TEST(StartSearch, ShiftedStartMovesTheProjectionByTheShareOfTheEyeDistance) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, 0.0);
@@ -83,13 +96,8 @@ TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
   Fitter fitter(model, scene.camera);
-  const Eigen::Vector2d low = scene.truthPoints.rowwise().minCoeff();
-  const Eigen::Vector2d high = scene.truthPoints.rowwise().maxCoeff();
-  const double side = 1.3 * (high - low).maxCoeff();
-  const Eigen::Vector2d centre = 0.5 * (low + high);
-  FaceBox profile;
-  profile.box = cv::Rect2d(centre.x() - 0.5 * side, centre.y() - 0.5 * side, side, side);
-  profile.profile = true;  // not mirrored: turned to the image's left, negative yaw
+  FaceBox profile =
+      profileBoxAround(scene);  // not mirrored: turned to the image's left, negative yaw
   FaceBox frontal = profile;
   frontal.profile = false;
   FaceBox dlibSide = profile;
@@ -141,13 +149,7 @@ TEST(FaceSearch, AProfileBoxsStartIsSearchedFromItsOwnGrid) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
   Fitter fitter(model, scene.camera);
-  const Eigen::Vector2d low = scene.truthPoints.rowwise().minCoeff();
-  const Eigen::Vector2d high = scene.truthPoints.rowwise().maxCoeff();
-  const double side = 1.3 * (high - low).maxCoeff();
-  const Eigen::Vector2d centre = 0.5 * (low + high);
-  FaceBox profile;
-  profile.box = cv::Rect2d(centre.x() - 0.5 * side, centre.y() - 0.5 * side, side, side);
-  profile.profile = true;
+  FaceBox profile = profileBoxAround(scene);
   FaceBox frontal = profile;
   frontal.profile = false;
   FaceSearch search;
