@@ -96,8 +96,7 @@ TEST(FaceSearch, ProfileBoxesArePlacedAgainWhenNoFitIsAccepted) {
   const ClmModel& model = test::fitTestModel();
   const test::FitScene scene = test::makeFitScene(model, 0.0, -45.0);
   Fitter fitter(model, scene.camera);
-  FaceBox profile =
-      profileBoxAround(scene);  // not mirrored: turned to the image's left, negative yaw
+  const FaceBox profile = profileBoxAround(scene);
   FaceBox frontal = profile;
   frontal.profile = false;
   FaceBox dlibSide = profile;
