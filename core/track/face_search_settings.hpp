@@ -78,8 +78,8 @@ struct FaceSearchSettings {
   // face's box places its start less surely, and the photo search now ranks turned fits on the
   // calibrated probability. On the 1,200 AFLW test faces, faces fitted right per |yaw| band
   // 374 / 278 / 130 -> 373 / 289 / 143 at 2 (3: 372 / 297 / 145), fits off the face reported
-  // 12 / 34 / 38 -> 13 / 36 / 41, the fit's median 35 -> 72 ms there (3: 130 ms); LFPW, whose
-  // faces the frontal cascade boxes, unchanged
+  // 12 / 34 / 38 -> 13 / 36 / 41, the fit's median 35 -> 74 ms there (3: 130 ms); on LFPW, whose
+  // faces the frontal cascade mostly boxes, mean error 0.0449 -> 0.0444
   // (docs/initialisation.md#profile-boxes-searched-wider).
   int profileStartSteps = 2;
   // Tilted faces: when no upright face's fit passes the point refiner's check (or no face is
